@@ -1,6 +1,7 @@
 // Avatar mesh pipeline; see avatar_mesh.h.
 #include "avatar_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -136,6 +137,59 @@ void optimise_for_gpu(MeshPiece& piece) {
   piece.nearest_primitive.swap(nearest);
 }
 
+// Per-triangle materials on a 1.5 mm grid give staircase edges (hairline, cuffs, lips). Smoothing
+// the vertices where materials meet along their own band, then pulling them back onto the
+// surface (Newton steps along the field gradient), turns the staircase into a smooth line
+// without changing the shape; the triangles keep their materials.
+void straighten_material_seams(const ImplicitBody& body, const std::vector<std::uint32_t>& indices,
+                               const std::vector<int>& triangle_key,
+                               std::vector<glm::vec3>& positions) {
+  const size_t n = positions.size();
+  std::vector<int> first_key(n, -1);
+  std::vector<char> seam(n, 0);
+  for (size_t t = 0; t < triangle_key.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = indices[3 * t + static_cast<size_t>(c)];
+      if (first_key[v] < 0) first_key[v] = triangle_key[t];
+      else if (first_key[v] != triangle_key[t]) seam[v] = 1;
+    }
+  std::map<std::uint32_t, std::vector<std::uint32_t>> neighbours;
+  for (size_t t = 0; t < triangle_key.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t a = indices[3 * t + static_cast<size_t>(c)];
+      const std::uint32_t b = indices[3 * t + static_cast<size_t>((c + 1) % 3)];
+      if (!seam[a] || !seam[b]) continue;
+      neighbours[a].push_back(b);
+      neighbours[b].push_back(a);
+    }
+  for (auto& [v, list] : neighbours) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  std::vector<int> all(body.primitives().size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    std::vector<std::pair<std::uint32_t, glm::vec3>> moved;
+    moved.reserve(neighbours.size());
+    for (const auto& [v, list] : neighbours) {
+      glm::vec3 mean(0.0f);
+      for (std::uint32_t u : list) mean += positions[u];
+      mean /= static_cast<float>(list.size());
+      moved.emplace_back(v, 0.5f * positions[v] + 0.5f * mean);
+    }
+    for (const auto& [v, p] : moved) positions[v] = p;
+  }
+  for (const auto& [v, list] : neighbours) {
+    const std::vector<int> near =
+        body.primitives_near(positions[v] - glm::vec3(0.01f), positions[v] + glm::vec3(0.01f),
+                             body.cull_margin() * 2.0f);
+    for (int step = 0; step < 3; ++step) {
+      const float d = body.sample(positions[v], near).distance;
+      positions[v] -= d * body.gradient(positions[v], near, 0.0003f);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const HumanoidLayout& layout,
@@ -172,6 +226,9 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
     triangle_surface[t] = key;
   }
 
+  std::vector<glm::vec3> raw_positions = raw.positions;
+  straighten_material_seams(body, raw.indices, triangle_surface, raw_positions);
+
   // Duplicate every vertex once per material that uses it: the material boundaries become
   // seams (same position, different vertex), which meshopt_simplify preserves.
   std::vector<glm::vec3> positions;
@@ -185,7 +242,7 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
       auto found = split.find(key);
       if (found == split.end()) {
         found = split.emplace(key, static_cast<std::uint32_t>(positions.size())).first;
-        positions.push_back(raw.positions[v]);
+        positions.push_back(raw_positions[v]);
         nearest.push_back(raw.nearest_primitive[v]);
         surface.push_back(triangle_surface[t]);
       }
