@@ -26,6 +26,7 @@ const char* material_name(Material material) {
     case Material::kEyeWhite: return "eyeWhite";
     case Material::kIris: return "iris";
     case Material::kTongue: return "tongue";
+    case Material::kTeeth: return "teeth";
     case Material::kCount: break;
   }
   return "unknown";
@@ -88,8 +89,8 @@ void add_tongue(const HumanoidLayout& layout, std::vector<MeshPiece>& pieces) {
   tongue.material = Material::kTongue;
   tongue.rigid_joint = layout.find("jaw");
   tongue.face = true;
-  const glm::vec3 centre(0.0f, kMouthY - 0.0045f, 0.070f);
-  const glm::vec3 radii(0.018f, 0.0040f, 0.026f);
+  const glm::vec3 centre(0.0f, kMouthY - 0.0050f, 0.056f);
+  const glm::vec3 radii(0.0150f, 0.0040f, 0.020f);
   constexpr int kRings = 8, kSegments = 14;
   for (int r = 0; r <= kRings; ++r) {
     const float theta = kPi * static_cast<float>(r) / kRings;
@@ -190,6 +191,57 @@ void straighten_material_seams(const ImplicitBody& body, const std::vector<std::
   }
 }
 
+// Teeth: upper and lower dental arches as curved bands just behind the lips, inside the mouth
+// cavity (implicit_body.cpp); the upper row rides on the head, the lower on the jaw. Seen only
+// when the mouth opens (visemes, jawOpen), where they make the mouth read as a mouth.
+void add_teeth(const HumanoidLayout& layout, std::vector<MeshPiece>& pieces) {
+  for (int row = 0; row < 2; ++row) {
+    const bool upper = row == 0;
+    MeshPiece teeth;
+    teeth.material = Material::kTeeth;
+    teeth.rigid_joint = layout.find(upper ? "head" : "jaw");
+    teeth.face = true;
+    const float arch_radius = upper ? 0.0235f : 0.0220f;  // the lower arch sits inside the upper
+    const glm::vec3 arch_centre(0.0f, 0.0f, 0.0540f);
+    const float y_edge = kMouthY + (upper ? 0.0018f : -0.0020f);  // biting edge, off the slit
+    const float y_root = kMouthY + (upper ? 0.0095f : -0.0085f);
+    const float thickness = 0.0045f;
+    constexpr int kSteps = 16;
+    const float sweep = 1.05f;  // radians each side of the midline: incisors to premolars
+    // Four corners of the cross-section (outer edge, outer root, inner root, inner edge).
+    for (int i = 0; i <= kSteps; ++i) {
+      const float a = -sweep + 2.0f * sweep * static_cast<float>(i) / kSteps;
+      const glm::vec3 out(std::sin(a), 0.0f, std::cos(a));
+      const glm::vec3 corners[4] = {
+          arch_centre + out * arch_radius + glm::vec3(0, y_edge, 0),
+          arch_centre + out * arch_radius + glm::vec3(0, y_root, 0),
+          arch_centre + out * (arch_radius - thickness) + glm::vec3(0, y_root, 0),
+          arch_centre + out * (arch_radius - thickness) + glm::vec3(0, y_edge, 0)};
+      const glm::vec3 up(0.0f, upper ? 1.0f : -1.0f, 0.0f);
+      const glm::vec3 normals[4] = {glm::normalize(out - 0.3f * up), glm::normalize(out + 0.3f * up),
+                                    glm::normalize(-out + 0.3f * up), glm::normalize(-out - 0.3f * up)};
+      for (int c = 0; c < 4; ++c) {
+        teeth.positions.push_back(corners[c]);
+        teeth.normals.push_back(normals[c]);
+        teeth.nearest_primitive.push_back(-1);
+      }
+    }
+    for (int i = 0; i < kSteps; ++i)
+      for (int c = 0; c < 4; ++c) {
+        const auto a = static_cast<std::uint32_t>(4 * i + c);
+        const auto b = static_cast<std::uint32_t>(4 * i + (c + 1) % 4);
+        const std::uint32_t a2 = a + 4, b2 = b + 4;
+        // Winding chosen per row so the faces point out of the band (the rows mirror in y).
+        if (upper) {
+          teeth.indices.insert(teeth.indices.end(), {a, a2, b, b, a2, b2});
+        } else {
+          teeth.indices.insert(teeth.indices.end(), {a, b, a2, b, b2, a2});
+        }
+      }
+    pieces.push_back(teeth);
+  }
+}
+
 }  // namespace
 
 std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const HumanoidLayout& layout,
@@ -199,6 +251,7 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
   add_eyeball(layout.position("leftEye"), layout.find("leftEye"), pieces);
   add_eyeball(layout.position("rightEye"), layout.find("rightEye"), pieces);
   add_tongue(layout, pieces);
+  add_teeth(layout, pieces);
   std::size_t fixed_triangles = 0;
   for (const MeshPiece& piece : pieces) fixed_triangles += piece.indices.size() / 3;
 

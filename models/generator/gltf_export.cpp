@@ -36,6 +36,7 @@ MaterialLook look(Material m) {
     case Material::kEyeWhite: return {{0.93f, 0.92f, 0.89f}, 0.2f};
     case Material::kIris: return {{0.22f, 0.14f, 0.09f}, 0.15f};
     case Material::kTongue: return {{0.76f, 0.38f, 0.40f}, 0.45f};
+    case Material::kTeeth: return {{0.92f, 0.90f, 0.84f}, 0.3f};
     case Material::kCount: break;
   }
   return {{1, 0, 1}, 1};
