@@ -128,7 +128,7 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   blob(torso, {0.0f, 0.950f, -0.008f}, {0.160f, 0.105f, 0.105f}, Surface::kTrousers, hips, spine);
   blob(torso, {0.0f, 1.070f, 0.000f}, {0.135f, 0.110f, 0.098f}, Surface::kTop, spine, chest);
   blob(torso, {0.0f, 1.235f, 0.000f}, {0.150f, 0.150f, 0.105f}, Surface::kTop, chest, upper_chest);
-  cone(torso, {-0.135f, 1.370f, -0.015f}, {0.135f, 1.370f, -0.015f}, 0.060f, 0.060f, Surface::kTop,
+  cone(torso, {-0.130f, 1.360f, -0.015f}, {0.130f, 1.360f, -0.015f}, 0.058f, 0.058f, Surface::kTop,
        upper_chest, neck);
   for (float side : {1.0f, -1.0f}) {
     blob(torso, {side * 0.070f, 0.900f, -0.055f}, {0.085f, 0.095f, 0.070f}, Surface::kTrousers,
@@ -217,9 +217,10 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
     const int shoulder = bone(p + "Shoulder"), upper_arm = bone(p + "UpperArm"),
               lower_arm = bone(p + "LowerArm"), hand = bone(p + "Hand");
     const int arm = add_part(p + "Arm", torso, 0.045f, 0.035f);
-    blob(arm, J(p + "UpperArm") + glm::vec3(side * -0.005f, 0.008f, 0.0f), {0.062f, 0.056f, 0.058f},
+    // Deltoid: caps the joint without rising above the acromion (about 4 cm over the joint).
+    blob(arm, J(p + "UpperArm") + glm::vec3(side * -0.004f, -0.004f, 0.0f), {0.058f, 0.046f, 0.054f},
          Surface::kTop, shoulder, upper_arm);
-    cone(arm, J(p + "UpperArm"), J(p + "LowerArm"), 0.050f, 0.038f, Surface::kTop, upper_arm,
+    cone(arm, J(p + "UpperArm"), J(p + "LowerArm"), 0.046f, 0.037f, Surface::kTop, upper_arm,
          lower_arm);
     // Forearm: muscular near the elbow, flattened at the wrist (wrist 56 mm wide, 38 mm deep).
     cone(arm, J(p + "LowerArm"), J(p + "LowerArm") + glm::vec3(side * 0.09f, 0.0f, 0.0f), 0.040f,
