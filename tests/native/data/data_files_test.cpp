@@ -137,6 +137,21 @@ std::map<std::string, SignSpec> check_letter_file(const std::string& relative,
     EXPECT_TRUE(by_letter.emplace(letter, std::move(sign)).second)
         << e.where << ": duplicate letter " << letter;
   }
+  // Two letters of one alphabet that mean the same sign could not be told apart when spelled
+  // (the canonical printed form compares every field of the model; without the H(...) words it
+  // was written with, the hands print finger by finger, so two spellings of one shape compare equal).
+  std::map<std::string, std::string> letter_of_form;
+  for (const auto& [letter, sign] : by_letter) {
+    SignSpec bare = sign;
+    bare.dominant.shape.hamnosys_base.clear();
+    for (auto& step : bare.movements) {
+      for (auto& m : step.dominant) {
+        if (m.to_shape) m.to_shape->hamnosys_base.clear();
+      }
+    }
+    const auto [it, fresh] = letter_of_form.emplace(sw::notation::print_formula(bare), letter);
+    EXPECT_TRUE(fresh) << relative << ": " << letter << " is the same sign as " << it->second;
+  }
   return by_letter;
 }
 
