@@ -103,6 +103,28 @@ void expect_replace_states_full_orientation(const Entry& e, const std::string& n
   }
 }
 
+// HamNoSys palm orientation is relative to the finger direction: synthesis turns the palm towards
+// P within the plane across E, so P parallel to E (E(d), P(d)) says nothing and is a writing error.
+bool parallel(const sw::notation::Direction& a, const sw::notation::Direction& b) {
+  return a.y * b.z == a.z * b.y && a.z * b.x == a.x * b.z && a.x * b.y == a.y * b.x;
+}
+void expect_palm_across_fingers(const Entry& e, const char* what, const sw::notation::Orientation& o) {
+  if (o.seed_palm != SeedPalm::None) return;  // the seed's D_i carry no finger direction
+  EXPECT_FALSE(parallel(o.extended_finger, o.palm)) << e.where << ": " << what
+      << ": the palm direction P(...) is parallel to the finger direction E(...)";
+}
+void expect_orientations_well_formed(const Entry& e, const SignSpec& sign) {
+  expect_palm_across_fingers(e, "dominant hand", sign.dominant.orientation);
+  if (sign.nondominant) expect_palm_across_fingers(e, "other hand", sign.nondominant->orientation);
+  for (const auto& step : sign.movements) {
+    for (const auto* hand : {&step.dominant, &step.nondominant}) {
+      for (const auto& m : *hand) {
+        if (m.to_orientation) expect_palm_across_fingers(e, "orientation change", *m.to_orientation);
+      }
+    }
+  }
+}
+
 // Parses the entry's notation with the core; returns the one sign, or fails with the diagnostics.
 SignSpec parse_entry(const Entry& e) {
   const std::string notation = text_field(e, "notation");
@@ -114,6 +136,7 @@ SignSpec parse_entry(const Entry& e) {
   EXPECT_TRUE(outcome.ok()) << e.where << ": " << notation << why.str();
   EXPECT_EQ(outcome.signs.size(), 1u) << e.where << ": " << notation << why.str();
   if (outcome.signs.empty()) return SignSpec{};
+  expect_orientations_well_formed(e, outcome.signs.front());
   // The editor and the server print signs back: what the data says must survive the printer.
   const std::string printed = sw::notation::print_formula(outcome.signs.front());
   const auto reread = sw::notation::parse_notation(printed, NotationFormat::Formula);
