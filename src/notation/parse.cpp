@@ -3,6 +3,7 @@
 #include "notation/parse.h"
 
 #include "notation/formula.h"
+#include "notation/hamnosys.h"
 #include "notation/text_position.h"
 
 namespace sw::notation {
@@ -75,12 +76,14 @@ std::vector<SignParse> parse_signs(std::string_view text, NotationFormat format)
   switch (format) {
     case NotationFormat::Formula:
       return parse_formula_text(text);
+    case NotationFormat::HamNoSys:
+      return parse_hamnosys_text(text);
     default: {
       SignParse none;
       const LineIndex index(text);
       none.diagnostics.push_back(index.make(0, 0, format_name(format),
                                             std::string("expected a notation this build reads "
-                                                        "(formula), found '") +
+                                                        "(formula, hamnosys), found '") +
                                                 format_name(format) + "'"));
       return {none};
     }
