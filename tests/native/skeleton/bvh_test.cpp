@@ -179,6 +179,23 @@ TEST(BvhRoundTrip, LocalTransformsThroughChannelsAndBack) {
   }
 }
 
+TEST(BvhRoundTrip, ExportedAngleTracksAreContinuous) {
+  // A joint turning from 170° to 190° about Z is written as 170, 190 — not 170, -170, which a BVH
+  // player would interpolate the long way round.
+  Bvh bvh = read_ok(kArm);
+  bvh.frame_count = 2;
+  bvh.values.assign(2u * 15u, 0.0);
+  std::vector<math::Transform> local(bvh.joints.size());
+  const int arm = bvh.find("RightArm");  // channels Xrotation Yrotation Zrotation
+  for (int f = 0; f < 2; ++f) {
+    local[static_cast<std::size_t>(arm)].rotation = glm::angleAxis(glm::radians(f == 0 ? 170.0f : 190.0f), glm::vec3(0, 0, 1));
+    ASSERT_TRUE(local_to_frame(local, 0.01, bvh, f));
+  }
+  const int z = bvh.channel_offset(arm) + 2;
+  EXPECT_NEAR(bvh.frame(0)[z], 170.0, 1e-4);
+  EXPECT_NEAR(bvh.frame(1)[z], 190.0, 1e-4);
+}
+
 TEST(BvhWrite, NonDepthFirstArrayIsWrittenInFileOrder) {
   // Joints stored breadth first: the writer emits depth first and permutes the frame values to match.
   Bvh bvh;
