@@ -339,6 +339,32 @@ TEST(BvhMalformed, RandomByteMutationsNeverCrash) {
   }
 }
 
+std::string nested_chain(int depth) {
+  std::string text = "HIERARCHY\n";
+  for (int i = 0; i < depth; ++i) {
+    text += (i == 0 ? "ROOT j" : "JOINT j") + std::to_string(i) + "\n{\nOFFSET 0 1 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n";
+  }
+  for (int i = 0; i < depth; ++i) text += "}\n";
+  text += "MOTION\nFrames: 1\nFrame Time: 0.1\n";
+  for (int i = 0; i < depth; ++i) text += "0 0 0 ";
+  return text + "\n";
+}
+
+TEST(BvhLimits, DeepChainUpToTheJointLimitParses) {
+  // 1024 nested joints: the recursive parser's depth is bounded by the joint limit.
+  const BvhReadResult r = read_bvh(nested_chain(Bvh::kMaxJoints));
+  ASSERT_TRUE(r.ok) << r.error.format();
+  EXPECT_EQ(r.bvh.joints.size(), std::size_t(Bvh::kMaxJoints));
+  EXPECT_EQ(r.bvh.joints.back().parent, Bvh::kMaxJoints - 2);
+}
+
+TEST(BvhLimits, OneJointMoreIsRefusedWithItsLine) {
+  const BvhReadResult r = read_bvh(nested_chain(Bvh::kMaxJoints + 1));
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.error.line, 2 + 4 * Bvh::kMaxJoints);  // the name of joint 1025
+  EXPECT_NE(r.error.message.find("more than 1024 joints"), std::string::npos) << r.error.format();
+}
+
 TEST(BvhMalformed, ErrorFormatsWithLine) {
   const BvhReadResult r = read_bvh("HIERARCHY\nROOT Hips\n{\n\tOFFSET 0 0\n");
   EXPECT_FALSE(r.ok);
