@@ -28,7 +28,8 @@
 //   - at most kMaxValues channel values in total (64 Mi, 512 MiB as double), so a forged
 //     "Frames: 999999999" cannot exhaust memory.
 //
-// Does not: read scale channels or non-standard channel types; a file with them is rejected.
+// Does not: read scale channels or non-standard channel types, or joint names containing spaces;
+// a file with them is rejected with the line. One frame is one line, as every exporter writes it.
 #pragma once
 
 #include <cstddef>
@@ -117,7 +118,8 @@ Skeleton to_skeleton(const Bvh& bvh, double scale_to_m = 1.0, bool include_end_s
 bool frame_to_local(const Bvh& bvh, int frame, double scale_to_m, math::Span<math::Transform> out);
 
 // The inverse: fills one frame's channels from local transforms (translation goes to position
-// channels where the joint has them; rotation to Euler angles in the joint's channel order).
+// channels where the joint has them; rotation to Euler angles in the joint's channel order, chosen
+// nearest the previous frame's angles so that tracks stay continuous — fill frames in order).
 bool local_to_frame(math::Span<const math::Transform> local, double scale_to_m, Bvh& bvh, int frame);
 
 }  // namespace sw::skeleton
