@@ -1,7 +1,8 @@
 // AvatarInstance: runs the pose -> skinned mesh pipeline. See avatar_instance.h.
 #include "skinning/avatar_instance.h"
 
-#include "skinning/local_to_model_job.h"
+#include "skeleton/local_to_model.h"
+#include "skinning/skinning_matrix_job.h"
 
 namespace sw::skinning {
 
@@ -31,13 +32,11 @@ bool AvatarInstance::update(SkinningPath path) {
   const int joint_count = a.skeleton.joint_count();
   error_.clear();
 
-  LocalToModelJob fk;
+  skeleton::LocalToModelJob fk;
   fk.skeleton = &a.skeleton;
-  fk.locals = locals_.data();
-  fk.local_count = static_cast<int>(locals_.size());
-  fk.models = models_.data();
-  fk.model_count = static_cast<int>(models_.size());
-  if (!fk.run()) { error_ = fk.validate(); return false; }
+  fk.input = locals_;
+  fk.output = models_;
+  if (!fk.run()) { error_ = "forward kinematics rejected the pose"; return false; }
 
   SkinningMatrixJob palette;
   palette.models = models_.data();

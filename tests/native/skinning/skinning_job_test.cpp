@@ -10,7 +10,8 @@
 #include "../avatar/test_humanoid.h"
 #include "avatar/gltf_loader.h"
 #include "skeleton/humanoid_names.h"
-#include "skinning/local_to_model_job.h"
+#include "skeleton/local_to_model.h"
+#include "skinning/skinning_matrix_job.h"
 
 namespace sw::skinning {
 namespace {
@@ -27,8 +28,10 @@ const avatar::Avatar& humanoid() {
 
 std::vector<glm::mat4> palette(const avatar::Avatar& a, const std::vector<math::Transform>& locals) {
   std::vector<glm::mat4> models(locals.size()), skin(locals.size());
-  LocalToModelJob fk{&a.skeleton, locals.data(), static_cast<int>(locals.size()), models.data(),
-                     static_cast<int>(models.size()), 0};
+  skeleton::LocalToModelJob fk;
+  fk.skeleton = &a.skeleton;
+  fk.input = locals;
+  fk.output = models;
   EXPECT_TRUE(fk.run());
   SkinningMatrixJob sm{models.data(), a.inverse_bind.data(), static_cast<int>(locals.size()), skin.data()};
   EXPECT_TRUE(sm.run());
