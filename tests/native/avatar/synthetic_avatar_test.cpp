@@ -17,7 +17,7 @@ TEST(SyntheticAvatar, IsASkinnedHumanoidWithinBudget) {
   const LoadResult r = load_avatar(glb.data(), glb.size());
   ASSERT_TRUE(r.ok()) << r.message();
   EXPECT_LE(r.avatar.mesh.indices.size() / 3, 30000u);
-  EXPECT_GE(r.avatar.mesh.positions.size(), 5000u);
+  EXPECT_GE(r.avatar.mesh.positions.size(), 3000u);
   // The tallest point is the top of the head, about 1.77 m.
   float top = 0.0f;
   for (const glm::vec3& p : r.avatar.mesh.positions) top = std::max(top, p.y);
