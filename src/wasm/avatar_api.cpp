@@ -235,10 +235,13 @@ bool avatar_update_repeatedly(int id, bool simd, int count) {
   return ok;
 }
 
-// LBS only (positions + normals, 4 influences), on the instance's current palette and morphs.
-bool avatar_skin_repeatedly(int id, bool simd, int count) {
+// LBS only (positions + normals), on the instance's current palette. all_four: every vertex
+// blends 4 matrices (weights 0.4/0.3/0.2/0.1), the worst case, whatever the model's weights.
+bool avatar_skin_repeatedly(int id, bool simd, int count, bool all_four) {
   LoadedAvatar* a = find(id);
   if (!a) return false;
+  static std::vector<glm::vec4> four_weights;
+  if (all_four) four_weights.assign(a->avatar.mesh.weights.size(), glm::vec4(0.4f, 0.3f, 0.2f, 0.1f));
   auto& inst = *a->instance;
   const auto& mesh = a->avatar.mesh;
   sw::skinning::SkinningJob job;
@@ -248,7 +251,7 @@ bool avatar_skin_repeatedly(int id, bool simd, int count) {
   job.in_positions = mesh.positions.data();
   job.in_normals = mesh.normals.data();
   job.joints = mesh.joints.data();
-  job.weights = mesh.weights.data();
+  job.weights = all_four ? four_weights.data() : mesh.weights.data();
   job.out_positions = const_cast<float*>(inst.positions().data());
   job.out_normals = const_cast<float*>(inst.normals().data());
   job.path = path_of(simd);
