@@ -248,11 +248,13 @@ class AnchorBuilder {
 
   // The five sides of one level: front-surface points across, or lateral/oblique rays for the
   // levels whose sides are on the side of the head (ears, cheeks).
-  void level(const std::string& name, float h, int j, int j_left, int j_right, float inset_m = 0.0f) {
+  // `regions`: the parts a level's rays may stop on (below the waist the thighs' skin is there).
+  void level(const std::string& name, float h, int j, int j_left, int j_right, float inset_m = 0.0f,
+             unsigned regions = kCore) {
     const glm::vec3 o = axis(h);
-    const float wl = half_width(h, 1.0f, kCore, 0.08f);
-    const float wr = half_width(h, -1.0f, kCore, 0.08f);
-    const Hit centre = surface("body/" + name + "/centre", o, forward_, kCore, 0.08f);
+    const float wl = half_width(h, 1.0f, regions, 0.08f);
+    const float wr = half_width(h, -1.0f, regions, 0.08f);
+    const Hit centre = surface("body/" + name + "/centre", o, forward_, regions, 0.08f);
     const std::string base = "body/" + name + "/";
     Hit left, right;
     if (name == "ears") {
@@ -262,8 +264,8 @@ class AnchorBuilder {
       left = surface(base + "left", o, glm::normalize(forward_ * 0.8f + left_ * 0.6f), kCore, wl);
       right = surface(base + "right", o, glm::normalize(forward_ * 0.8f - left_ * 0.6f), kCore, wr);
     } else {
-      left = surface(base + "left", o + left_ * (0.5f * wl), forward_, kCore, centre.distance);
-      right = surface(base + "right", o - left_ * (0.5f * wr), forward_, kCore, centre.distance);
+      left = surface(base + "left", o + left_ * (0.5f * wl), forward_, regions, centre.distance);
+      right = surface(base + "right", o - left_ * (0.5f * wr), forward_, regions, centre.distance);
     }
     // Teeth and tongue sit behind the lips: the lip points moved inward along the normal.
     const auto inside = [&](Hit hit) { hit.point -= forward_ * inset_m; return hit; };
@@ -331,7 +333,7 @@ class AnchorBuilder {
     level("stomach", leg_h_ + 0.55f * torso, mid, mid, mid);
     level("belly", leg_h_ + 0.42f * torso, spine, spine, spine);
     level("waist", leg_h_ + 0.32f * torso, spine, spine, spine);
-    level("below_waist", leg_h_ + 0.14f * torso, hips, hips, hips);
+    level("below_waist", leg_h_ + 0.14f * torso, hips, hips, hips, 0.0f, kCore | kLegs);
   }
 
   // Under the chin: rays up from just in front of the neck onto the jaw's underside.
