@@ -62,6 +62,7 @@ void skin_scalar(const SkinningJob& job) {
 using F4 = v128_t;
 inline F4 load4(const float* p) { return wasm_v128_load(p); }
 inline F4 splat(float x) { return wasm_f32x4_splat(x); }
+inline F4 load_splat(const float* p) { return wasm_v128_load32_splat(p); }  // one instruction
 inline F4 mul(F4 a, F4 b) { return wasm_f32x4_mul(a, b); }
 inline F4 add(F4 a, F4 b) { return wasm_f32x4_add(a, b); }
 inline void store4(float* p, F4 v) { wasm_v128_store(p, v); }
@@ -74,6 +75,7 @@ inline void store3(float* p, F4 v) {
 typedef float F4 __attribute__((vector_size(16)));
 inline F4 load4(const float* p) { F4 v; std::memcpy(&v, p, sizeof v); return v; }
 inline F4 splat(float x) { return F4{x, x, x, x}; }
+inline F4 load_splat(const float* p) { return splat(*p); }
 inline F4 mul(F4 a, F4 b) { return a * b; }
 inline F4 add(F4 a, F4 b) { return a + b; }
 inline void store4(float* p, F4 v) { std::memcpy(p, &v, sizeof v); }
@@ -104,7 +106,7 @@ inline void skin_vertex_simd(const SimdArrays& a, std::size_t v) {
   const float* m2 = a.matrices + 16 * j[2];
   const float* m3 = a.matrices + 16 * j[3];
   const glm::vec4 wv = a.weights[v];
-  const F4 w0 = splat(wv.x), w1 = splat(wv.y), w2 = splat(wv.z), w3 = splat(wv.w);
+  const float* wp = &a.weights[v].x;
   F4 c[4];
   // Most of a humanoid's vertices have one or two influences (rigid limbs, knuckle seams): skip
   // the zero-weight matrices. With weights >= 0 summing to 1 (the Avatar contract), w.x == 1 means
@@ -112,21 +114,23 @@ inline void skin_vertex_simd(const SimdArrays& a, std::size_t v) {
   if (wv.x == 1.0f) {
     for (int k = 0; k < 4; ++k) c[k] = load4(m0 + 4 * k);
   } else if (wv.z == 0.0f && wv.w == 0.0f) {
+    const F4 w0 = load_splat(wp), w1 = load_splat(wp + 1);
     for (int k = 0; k < 4; ++k) c[k] = add(mul(load4(m0 + 4 * k), w0), mul(load4(m1 + 4 * k), w1));
   } else {
+    const F4 w0 = load_splat(wp), w1 = load_splat(wp + 1), w2 = load_splat(wp + 2), w3 = load_splat(wp + 3);
     for (int k = 0; k < 4; ++k) {
       c[k] = add(add(add(mul(load4(m0 + 4 * k), w0), mul(load4(m1 + 4 * k), w1)),
                      mul(load4(m2 + 4 * k), w2)),
                  mul(load4(m3 + 4 * k), w3));
     }
   }
-  const glm::vec3 p = a.positions[v];
-  const F4 sp = add(add(add(mul(c[0], splat(p.x)), mul(c[1], splat(p.y))), mul(c[2], splat(p.z))), c[3]);
+  const float* p = &a.positions[v].x;
+  const F4 sp = add(add(add(mul(c[0], load_splat(p)), mul(c[1], load_splat(p + 1))), mul(c[2], load_splat(p + 2))), c[3]);
   float* op = a.out_positions + 3 * v;
   if (kLast) store3(op, sp); else store4(op, sp);
   if (kNormals) {
-    const glm::vec3 n = a.normals[v];
-    const F4 sn = add(add(mul(c[0], splat(n.x)), mul(c[1], splat(n.y))), mul(c[2], splat(n.z)));
+    const float* n = &a.normals[v].x;
+    const F4 sn = add(add(mul(c[0], load_splat(n)), mul(c[1], load_splat(n + 1))), mul(c[2], load_splat(n + 2)));
     float* on = a.out_normals + 3 * v;
     if (kLast) store3(on, sn); else store4(on, sn);
   }
