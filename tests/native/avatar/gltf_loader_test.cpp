@@ -276,7 +276,9 @@ TEST(GltfLoader, MalformedContainerCatalogue) {
   cases.push_back({"JSON nested 10000 deep", with_json("{\"asset\":{\"version\":\"2.0\"},\"extras\":" +
                                                           std::string(10000, '[') + std::string(10000, ']') + "}"), "nested"});
   cases.push_back({"buffer byteLength 0", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":0}]}", {1, 2, 3, 4}), "byteLength"});
-  cases.push_back({"buffer byteLength huge", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":1e300}]}", {1, 2, 3, 4}), "byteLength"});
+  cases.push_back({"buffer byteLength huge", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":1e300}]}", {1, 2, 3, 4}), "out of range"});
+  cases.push_back({"accessor count 2^40", with_json("{\"asset\":{\"version\":\"2.0\"},\"accessors\":[{\"count\":1099511627776,\"componentType\":5126,\"type\":\"VEC3\"}]}"), "out of range"});
+  cases.push_back({"negative node index", with_json("{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[-5000000000]}]}"), "out of range"});
   cases.push_back({"buffer larger than BIN", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":400}]}", {1, 2, 3, 4}), "byteLength"});
   cases.push_back({"buffer without BIN chunk", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4}]}"), "BIN"});
   cases.push_back({"empty image data", with_json("{\"asset\":{\"version\":\"2.0\"},\"images\":[{\"uri\":\"data:image/png;base64,\"}],\"nodes\":[{}]}"), "skin"});
