@@ -19,10 +19,10 @@ constexpr std::array<const char*, 23> kLevels = {
     "cheeks", "mouth", "lips", "teeth", "tongue", "chin", "under_chin", "neck",
     "shoulders", "shoulder_top", "chest", "stomach", "belly", "waist", "below_waist"};
 constexpr std::array<const char*, 5> kSides = {"right_beside", "right", "centre", "left", "left_beside"};
-constexpr std::array<const char*, 6> kHandPlaces = {"palm", "back", "thumb_side", "little_side", "wrist", "wrist_back"};
+constexpr std::array<const char*, 7> kHandPlaces = {"palm", "back", "thumb_side", "little_side", "wrist", "wrist_back", "thumb_ball"};
 constexpr std::array<const char*, 6> kFingerPlaces = {"tip", "pad", "nail", "base", "middle_joint", "side"};
 constexpr std::array<const char*, 5> kFingerNames = {"thumb", "index", "middle", "ring", "little"};
-constexpr std::array<const char*, 4> kArmPlaces = {"forearm", "forearm_back", "elbow", "upper_arm"};
+constexpr std::array<const char*, 5> kArmPlaces = {"forearm", "forearm_back", "elbow", "upper_arm", "elbow_inside"};
 
 // Which body part a triangle belongs to, so a ray from inside the head cannot stop on a hand.
 enum Region : unsigned { kCore = 1, kLeftArm = 2, kRightArm = 4, kLeftHand = 8, kRightHand = 16, kLegs = 32 };
@@ -449,6 +449,11 @@ class AnchorBuilder {
     add(base + "wrist", hand_joint, wrist_front.point, wrist_front.normal);
     const Hit wrist_back = surface(base + "wrist_back", wrist, -palmar, region | arm_region, palm_fallback);
     add(base + "wrist_back", hand_joint, wrist_back.point, wrist_back.normal);
+    // HamNoSys hamthumbball: the ball of the thumb (thenar eminence) — on the palm, towards the
+    // thumb, nearer the wrist than the knuckles.
+    const glm::vec3 thenar = glm::mix(wrist, index, 0.35f) + 0.25f * glm::length(index - little) * thumbward;
+    const Hit ball = surface(base + "thumb_ball", thenar, palmar, region, palm_fallback);
+    add(base + "thumb_ball", hand_joint, ball.point, ball.normal);
 
     for (int f = 0; f < 5; ++f) {
       const Finger finger = static_cast<Finger>(f);
@@ -509,6 +514,9 @@ class AnchorBuilder {
     const glm::vec3 outward = perpendicular(left_ * (left ? 1.0f : -1.0f) + up_, upper_axis);
     const Hit upper = surface(base + "upper_arm", glm::mix(shoulder, elbow, 0.5f), outward, region, 0.045f);
     add(base + "upper_arm", joint(upper_id), upper.point, upper.normal);
+    // HamNoSys hamelbowinside: the crook of the elbow, opposite the elbow's tip.
+    const Hit crook = surface(base + "elbow_inside", elbow + fore_axis * 0.01f, perpendicular(forward_, upper_axis), region, 0.04f);
+    add(base + "elbow_inside", joint(lower_id), crook.point, crook.normal);
   }
 };
 
@@ -581,6 +589,8 @@ std::string hand_anchor_name(bool left, notation::HandPlace place, notation::Fin
     case HandPlace::ForearmBack: return "arm/" + side + "/forearm_back";
     case HandPlace::Elbow: return "arm/" + side + "/elbow";
     case HandPlace::UpperArm: return "arm/" + side + "/upper_arm";
+    case HandPlace::ThumbBall: return "hand/" + side + "/thumb_ball";
+    case HandPlace::ElbowInside: return "arm/" + side + "/elbow_inside";
   }
   return "hand/" + side + "/palm";
 }

@@ -74,7 +74,7 @@ bool off_body(const std::string& name) {
 
 void expect_every_anchor_once(const Avatar& a) {
   const std::vector<std::string> names = body_anchor_names();
-  EXPECT_EQ(names.size(), 23u * 5 + 5 + 2 * (6 + 5 * 6) + 2 * 4);
+  EXPECT_EQ(names.size(), 23u * 5 + 5 + 2 * (7 + 5 * 6) + 2 * 5);
   ASSERT_EQ(a.anchors.size(), names.size());
   std::set<std::string> seen;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -170,6 +170,18 @@ TEST(BodyAnchors, HandPlacesAreOnTheRightSidesOfTheHand) {
   EXPECT_LT(world(a, "hand/right/pad/middle").y, world(a, "hand/right/nail/middle").y);
   EXPECT_LT(world(a, "arm/left/elbow").z, 0.0f);  // the elbow points back
   EXPECT_GT(world(a, "arm/left/upper_arm").y, 1.42f);  // outer side, up in a T-pose
+}
+
+TEST(BodyAnchors, ThumbBallAndElbowCrookForHamNoSysPlaces) {
+  // hamthumbball / hamelbowinside: the notation names them, so every avatar must have them.
+  const Avatar a = load_synthetic();
+  for (const char* side : {"left", "right"}) {
+    const std::string hand = std::string("hand/") + side + "/";
+    EXPECT_LT(world(a, hand + "thumb_ball").y, world(a, hand + "back").y) << side;  // palm side
+    EXPECT_GT(world(a, hand + "thumb_ball").z, world(a, hand + "little_side").z) << side;
+    const std::string arm = std::string("arm/") + side + "/";
+    EXPECT_GT(world(a, arm + "elbow_inside").z, world(a, arm + "elbow").z) << side;  // in front
+  }
 }
 
 TEST(BodyAnchors, TurningTheAvatarTurnsTheAnchors) {
