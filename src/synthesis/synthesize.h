@@ -8,6 +8,7 @@
 // seed eqs (8)-(10) in quaternion space -> collision routing through via-poses -> one Clip.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,8 @@ struct SynthesisReport {
   float max_penetration_m = 0.0f;     // deepest unintended penetration over all frames
   int via_points_inserted = 0;        // collision routing (seed: intermediate states)
   int transition_states = 0;          // sum of k over transitions, seed eq. (10)
+  std::vector<float> contact_distances_m;  // per hand placed on a body/hand place: part -> anchor
+  std::vector<std::uint8_t> intended_contact;  // per frame: sign_motion.h exempt bits
   std::vector<std::string> warnings;  // unreachable targets, clamped joints, ...
 };
 
