@@ -1,6 +1,7 @@
 // Reference humanoid: skeleton (adult proportions, metres) + body anchors (see the header).
 #include "synthesis/reference_humanoid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -101,6 +102,7 @@ avatar::Avatar make_reference_humanoid() {
     return false;
   };
   const int levels = static_cast<int>(sizeof(kLevelHeight) / sizeof(kLevelHeight[0]));
+  const float torso_bottom_y = std::min(body.trunk[0].a.y, body.trunk[0].b.y);
   for (int l = 0; l < levels; ++l) {
     float y = kLevelHeight[l];
     int joint = y > 1.56f ? head : y > 1.455f ? neck : y > 1.34f ? upper : y > 1.22f ? chest
@@ -116,8 +118,12 @@ avatar::Avatar make_reference_humanoid() {
       else dir = glm::vec3(0.55f * glm::clamp(side, -1.0f, 1.0f), 0, 1.0f);
       if (level == "head_top" || level == "above_head") dir = glm::vec3(0.3f * glm::clamp(side, -1.0f, 1.0f), 1.0f, 0.25f);
       dir = glm::normalize(dir);
-      glm::vec3 p = origin;
+      // Below the torso capsules' hemispherical ends (the pelvis) the surface is taken from the
+      // lowest full-width section, at the level's own height.
+      float march_y = std::max(y, torso_bottom_y);
+      glm::vec3 p(origin.x, march_y, origin.z);
       for (int step = 0; step < 600 && inside(p); ++step) p += 0.001f * dir;
+      p.y = y;
       if (level == "above_head") p += 0.12f * glm::vec3(0, 1, 0);
       if (std::fabs(side) > 1.5f) {  // *_beside: off the body, a hand's width to the side
         glm::vec3 out(side > 0 ? 1.0f : -1.0f, 0, 0);

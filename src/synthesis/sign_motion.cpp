@@ -188,7 +188,32 @@ struct Solver {
       t.point = st.target;
       t.contact_offset = st.offset;
       t.hand_delta = st.delta;
-      st.swivel = solve_arm(rig, plan.side, t).swivel_rad;
+      ArmPose best = solve_arm(rig, plan.side, t);
+      if (spec.location.kind == Location::Kind::NeutralSpace ||
+          spec.location.level == BodyLevel::NeutralSpace) {
+        // Neutral space is a region, not a point: signers hold an upright hand higher and closer,
+        // a hand pointing away lower and further. Search a few places around the anchor for the
+        // one where the wrist realises the orientation best (a small penalty keeps it central).
+        const float up_steps[4] = {-0.06f, 0.0f, 0.06f, 0.12f};
+        const float in_steps[4] = {-0.12f, -0.06f, 0.0f, 0.05f};
+        glm::vec3 base = st.target;
+        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m;
+        glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
+        for (float dx : {0.0f, 0.08f})
+        for (float du : up_steps)
+          for (float dz : in_steps) {
+            glm::vec3 shift = du * rig.up + dz * rig.forward + dx * outward;
+            t.point = base + shift;
+            ArmPose p = solve_arm(rig, plan.side, t);
+            float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(shift);
+            if (cost < best_cost) {
+              best_cost = cost;
+              best = p;
+              st.target = t.point;
+            }
+          }
+      }
+      st.swivel = best.swivel_rad;
     }
     return st;
   }
