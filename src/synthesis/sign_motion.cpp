@@ -403,7 +403,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     add_hold(0.08f);
     std::array<HandState, 2> state = key;
     std::array<HandState, 2> start_state = key;
-    // Remember each played segment's start/goal so a reversed one can retrace it.
+    // Remember each played segment's start and goal (before path offsets) so a reversed one can
+    // retrace it.
     std::vector<std::array<HandState, 2>> seg_start(steps), seg_goal(steps);
     for (const Segment& seg : segments) {
       std::array<HandState, 2> from = state, goal = state;
@@ -412,7 +413,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       if (seg.back_to_start) {
         goal = start_state;
       } else if (seg.reversed) {
-        from = state;
+        // Retrace: from the forward segment's goal back to its start, offsets played backwards
+        // (at s = 0 this is exactly where the forward segment ended).
+        from = seg_goal[seg.step];
         goal = seg_start[seg.step];
         for (int i = 0; i < 2; ++i)
           if (seg.step < static_cast<int>(plans[i].steps.size())) ms[i] = plans[i].steps[seg.step];
@@ -448,6 +451,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           }
         }
         seg_start[seg.step] = from;
+        seg_goal[seg.step] = goal;
       }
       int n = std::max(2, static_cast<int>(std::lround(duration * fps / speed)));
       std::array<HandState, 2> last = from;
@@ -461,12 +465,6 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           bool alt = i == 1 && plans[1].alternating;
           for (const auto& m : ms[i]) {
             float ps = path_s;
-            if (seg.reversed) {
-              // Retrace: offsets relative to the segment's end, going back to its start.
-              h.target += movement_offset(rig, m, plans[i].move_mirror, ps, reference) -
-                          movement_offset(rig, m, plans[i].move_mirror, 1.0f, reference);
-              continue;
-            }
             if (alt && movement_is_cyclic(m)) {
               float shifted = std::fmod(ps + 0.5f, 1.0f);
               h.target += movement_offset(rig, m, plans[i].move_mirror, shifted, reference) -
@@ -485,7 +483,6 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         last = ft.hand;
       }
       state = last;
-      if (!seg.reversed && !seg.back_to_start) seg_goal[seg.step] = state;
       if (hold > 0.0f) add_hold(hold);
     }
     add_hold(0.12f);
