@@ -42,12 +42,12 @@ bool is_touch(Contact c) {
   return c == Contact::Touch || c == Contact::Brush || c == Contact::Grasp || c == Contact::Between;
 }
 
-// How far the contact part stays from the place (m): touch 0, close 5 cm, none 8 cm — the
+// How far the contact part stays from the place (m): touch 0, close 5 cm, none 7 cm — the
 // acceptance band for "no contact" is 3-10 cm.
 float contact_distance(Contact c, bool on_hand) {
   if (is_touch(c)) return 0.0f;
   if (c == Contact::Close) return on_hand ? 0.04f : 0.05f;
-  return on_hand ? 0.06f : 0.08f;
+  return on_hand ? 0.06f : 0.07f;
 }
 
 bool finger_extended(const notation::FingerConfig& f) {
