@@ -39,7 +39,8 @@ const char* side_name(notation::Side s) {
 }
 
 bool is_touch(Contact c) {
-  return c == Contact::Touch || c == Contact::Brush || c == Contact::Grasp || c == Contact::Between;
+  return c == Contact::Touch || c == Contact::Brush || c == Contact::Grasp ||
+         c == Contact::Between || c == Contact::Interlock;
 }
 
 // How far the contact part stays from the place (m): touch 0, close 5 cm, none 7 cm — the
