@@ -289,18 +289,23 @@ std::string body_anchor_name(const Location& loc, bool mirror_x) {
   return std::string("body/") + level_name(loc.level) + "/" + side_name(side);
 }
 
+bool validate_options(const SynthesisOptions& options, std::string* error) {
+  if (!(options.fps >= 5.0f && options.fps <= 240.0f)) {
+    *error = "fps must be between 5 and 240 (got " + std::to_string(options.fps) + ")";
+    return false;
+  }
+  if (!(options.speed >= 0.1f && options.speed <= 10.0f)) {
+    *error = "speed must be between 0.1 and 10 (got " + std::to_string(options.speed) + ")";
+    return false;
+  }
+  return true;
+}
+
 bool make_context(const avatar::Avatar& avatar, const SynthesisOptions& options, SynthContext* ctx,
                   std::string* error) {
   ctx->avatar = &avatar;
   ctx->options = options;
-  if (!(options.fps >= 5.0f && options.fps <= 240.0f)) {
-    *error = "fps must be between 5 and 240";
-    return false;
-  }
-  if (!(options.speed >= 0.1f && options.speed <= 10.0f)) {
-    *error = "speed must be between 0.1 and 10";
-    return false;
-  }
+  if (!validate_options(options, error)) return false;
   if (!build_rig(avatar, &ctx->rig, error)) return false;
   ctx->body = build_body_model(avatar, ctx->rig);
   const Rig& rig = ctx->rig;

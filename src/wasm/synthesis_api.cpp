@@ -29,6 +29,7 @@
 #include "synthesis/phrase_text.h"
 #include "synthesis/reference_humanoid.h"
 #include "synthesis/signing_avatar.h"
+#include "synthesis/synthesize.h"
 
 namespace {
 
@@ -37,6 +38,7 @@ using emscripten::val;
 
 struct SynthAvatar {
   sw::avatar::Avatar avatar;
+  std::unique_ptr<sw::synthesis::Synthesizer> synth;  // measures `avatar` once; points into it
   std::vector<sw::synthesis::AlphabetEntry> alphabet;
 };
 struct SynthClip {
@@ -66,6 +68,8 @@ val registered(sw::synthesis::SigningAvatar&& a) {
   if (!a.ok()) return error(a.error);
   auto entry = std::make_unique<SynthAvatar>();
   entry->avatar = std::move(a.avatar);
+  entry->synth = std::make_unique<sw::synthesis::Synthesizer>(entry->avatar);
+  if (!entry->synth->ok()) return error(entry->synth->error());
   int id = next_id();
   avatars()[id] = std::move(entry);
   val out = val::object();
@@ -107,7 +111,7 @@ val synth_compile(int avatar, const std::string& text, val options) {
   }
   sw::synthesis::PhraseText phrase = sw::synthesis::phrase_from_text(text, it->second->alphabet);
   if (!phrase.ok()) return error(phrase.errors.empty() ? "no signs in the text" : phrase.errors[0].where + ": " + phrase.errors[0].message);
-  sw::synthesis::SynthesisResult r = sw::synthesis::synthesize_phrase(phrase.items, it->second->avatar, opt);
+  sw::synthesis::SynthesisResult r = it->second->synth->phrase(phrase.items, opt);
   if (!r.ok()) return error(r.errors[0].where + ": " + r.errors[0].message);
   auto c = std::make_unique<SynthClip>();
   c->avatar = avatar;
