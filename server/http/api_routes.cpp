@@ -343,8 +343,8 @@ void ApiRoutes::get_sign(const httplib::Request& req, httplib::Response& res, st
 
 void ApiRoutes::create_sign(const httplib::Request& req, httplib::Response& res) {
   std::string author = authenticate(req);
+  require_json_content_type(req);  // before the parameters: httplib reads a form body into them
   check_params(req, {});
-  require_json_content_type(req);
   if (req.body.size() > limits_.max_sign_body_bytes) {
     throw ApiError(413, "a sign body is at most " + std::to_string(limits_.max_sign_body_bytes) + " bytes",
                    json{{"limit_bytes", limits_.max_sign_body_bytes}});
@@ -358,9 +358,9 @@ void ApiRoutes::create_sign(const httplib::Request& req, httplib::Response& res)
 
 void ApiRoutes::update_sign(const httplib::Request& req, httplib::Response& res, std::int64_t id) {
   std::string author = authenticate(req);
+  require_json_content_type(req);
   check_params(req, {});
   std::int64_t expected = require_if_match(req);
-  require_json_content_type(req);
   if (req.body.size() > limits_.max_sign_body_bytes) {
     throw ApiError(413, "a sign body is at most " + std::to_string(limits_.max_sign_body_bytes) + " bytes",
                    json{{"limit_bytes", limits_.max_sign_body_bytes}});
@@ -417,8 +417,11 @@ void ApiRoutes::import_signs(const httplib::Request& req, httplib::Response& res
   if (items.empty() && rejected.empty()) {
     throw ApiError(400, "the body holds no sign lines (one JSON object per line)");
   }
-  store::ImportReport report;
-  if (rejected.empty()) report = store_.import_items(items, "import:" + author, store::ImportMode::AllOrNothing);
+  // Lines that are not even JSON stop the import, but the others are still checked so that one
+  // answer lists every problem of the file.
+  store::ImportReport report = store_.import_items(
+      items, "import:" + author,
+      rejected.empty() ? store::ImportMode::AllOrNothing : store::ImportMode::CheckOnly);
   report.rejected.insert(report.rejected.end(), rejected.begin(), rejected.end());
   if (!report.rejected.empty()) {
     json lines = json::array();

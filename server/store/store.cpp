@@ -534,6 +534,7 @@ ImportReport Store::import_items(const std::vector<ImportItem>& items, const std
       reject(item, error);
     }
   }
+  if (mode == ImportMode::CheckOnly) return report;
   if (mode == ImportMode::AllOrNothing && !report.rejected.empty()) return report;
 
   // Phase 2: one transaction; each sign in a savepoint so SkipInvalid can drop just that one.

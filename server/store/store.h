@@ -60,6 +60,7 @@ struct ImportReport {
 enum class ImportMode {
   AllOrNothing,  // any rejected line: nothing is written (the HTTP bulk import)
   SkipInvalid,   // write the valid lines, report the rest (first start from data/, the CLI default)
+  CheckOnly,     // validate every line and report; write nothing (a dry run)
 };
 
 struct TokenCheck {
