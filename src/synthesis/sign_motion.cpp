@@ -1,6 +1,8 @@
 // Sign motion: key states, movement steps, repetitions and two hands -> frames (sign_motion.h).
 #include "synthesis/sign_motion.h"
 
+#include "face/emotion.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -307,6 +309,17 @@ bool validate_options(const SynthesisOptions& options, std::string* error) {
   }
   if (!(options.speed >= 0.1f && options.speed <= 10.0f)) {
     *error = "speed must be between 0.1 and 10 (got " + std::to_string(options.speed) + ")";
+    return false;
+  }
+  face::Emotion emotion{};
+  if (!face::emotion_from_name(options.emotion, &emotion)) {
+    *error = "unknown emotion '" + options.emotion + "' (one of: neutral, happy, sad, angry, "
+             "surprised, fear, disgust, sleepy)";
+    return false;
+  }
+  if (!(options.emotion_intensity >= 0.0f && options.emotion_intensity <= 1.0f)) {
+    *error = "emotion intensity must be between 0 and 1 (got " +
+             std::to_string(options.emotion_intensity) + ")";
     return false;
   }
   return true;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "face/face_track.h"
+#include "skeleton/humanoid_names.h"
 #include "synthesis/sign_motion.h"
 #include "synthesis/transition.h"
 
@@ -99,6 +101,7 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
   Timeline tl;
   tl.joints = J;
   Clip& clip = result.clip;
+  std::vector<face::FaceCue> face_cues;  // one per sign and pause, for the face layer
   auto add_segment = [&](ClipSegment::Kind kind, const std::string& label, int word, int first, int last) {
     ClipSegment seg;
     seg.kind = kind;
@@ -107,6 +110,19 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
     seg.start_s = first / static_cast<double>(fps);
     seg.end_s = last / static_cast<double>(fps);
     clip.segments.push_back(seg);
+  };
+  auto add_face_cue = [&](const PhraseItem& item) {
+    face::FaceCue cue;
+    cue.start_s = clip.segments.back().start_s;
+    cue.end_s = clip.segments.back().end_s;
+    cue.is_pause = item.kind == PhraseItem::Kind::Pause;
+    if (!cue.is_pause) cue.nonmanual = item.sign.nonmanual;
+    // Signers commonly mouth the word a sign stands for; a sign's own mouth picture wins, and a
+    // fingerspelled letter is not mouthed letter by letter.
+    if (options.mouthing && item.kind == PhraseItem::Kind::Sign && cue.nonmanual.mouthing.empty())
+      cue.nonmanual.mouthing = item.label;
+    if (!options.mouthing) cue.nonmanual.mouthing.clear();
+    face_cues.push_back(cue);
   };
   auto transition_to = [&](const glm::quat* target, std::uint8_t target_exempt) {
     if (tl.count() == 0) return;
@@ -129,6 +145,7 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
       std::vector<glm::quat> hold(tl.last(), tl.last() + J);
       for (int f = 0; f < n; ++f) tl.append(hold.data(), 1, &tl.exempt.back());
       add_segment(ClipSegment::Kind::Pause, item.label, item.word_index, first, tl.count() - 1);
+      add_face_cue(item);
       continue;
     }
     const SignMotion& m = motions[i];
@@ -137,6 +154,7 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
     int first = tl.count();
     tl.append(m.rotations.data(), m.frame_count, m.exempt.data());
     add_segment(segment_kind(item.kind), item.label, item.word_index, first, tl.count() - 1);
+    add_face_cue(item);
     result.report.max_reach_error_m = std::max(result.report.max_reach_error_m, m.max_reach_error_m);
     result.report.contact_distances_m.insert(result.report.contact_distances_m.end(),
                                              m.contact_distance_m.begin(), m.contact_distance_m.end());
@@ -153,6 +171,25 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
   clip.joint_names = rig.names;
   clip.rotations = std::move(tl.frames);
   clip.root_translation.assign(clip.frame_count, rig.root_translation);
+  if (options.face) {
+    // The face layer after the body: head gestures and gaze ride on the synthesised neck.
+    const avatar::Avatar& avatar = *ctx.avatar;
+    auto joint_of = [&](int canonical) {
+      return canonical < static_cast<int>(avatar.canonical_to_joint.size())
+                 ? avatar.canonical_to_joint[static_cast<std::size_t>(canonical)]
+                 : -1;
+    };
+    face::FaceRig face_rig;
+    face_rig.head = joint_of(skeleton::kHead);
+    face_rig.left_eye = joint_of(skeleton::kLeftEye);
+    face_rig.right_eye = joint_of(skeleton::kRightEye);
+    face::FaceOptions face_options;
+    face_options.emotion = options.emotion;
+    face_options.intensity = options.emotion_intensity;
+    face_options.mouthing = options.mouthing;
+    if (!face::add_face_tracks(clip, avatar.skeleton, face_rig, face_cues, face_options))
+      result.report.warnings.push_back("face tracks skipped: the clip does not match the skeleton");
+  }
   result.report.intended_contact = tl.exempt;
   std::string what;
   result.report.max_penetration_m =

@@ -26,6 +26,12 @@ struct SynthesisOptions {
   float hold_s = 0.25f;           // hold of a static sign's key pose (a letter)
   float pause_s = 0.45f;          // pause inserted at punctuation
   bool avoid_collisions = true;   // route transitions/movements through via-poses when needed
+  // The face channel (face/face_track.h): an emotion over the whole phrase, the signs' own
+  // non-manuals (brows, head, expression), mouthing, and blinks at pauses.
+  bool face = true;               // false: no morph tracks, head and eyes as the body leaves them
+  std::string emotion = "neutral";  // face/emotion.h names
+  float emotion_intensity = 0.0f;   // 0..1
+  bool mouthing = true;           // mouth the sign's mouth picture, else the word it stands for
 };
 
 struct SynthesisError {
