@@ -5,6 +5,7 @@
 
 #include "notation/formula.h"
 #include "notation/hamnosys.h"
+#include "notation/hamnosys_places.h"
 #include "notation/hamnosys_symbols.h"
 #include "notation/handshape.h"
 #include "notation/text_position.h"
@@ -52,63 +53,8 @@ bool is_movement_modifier(char32_t c) {
          c == hamalternatingmotion;
 }
 
-BodyLevel level_of(char32_t c) {
-  switch (c) {
-    case hamhead: return BodyLevel::Head;
-    case hamheadtop: return BodyLevel::HeadTop;
-    case hamforehead: return BodyLevel::Forehead;
-    case hameyebrows: return BodyLevel::Eyebrows;
-    case hameyes: return BodyLevel::Eyes;
-    case hamnose: case hamnostrils: return BodyLevel::Nose;
-    case hamear: case hamearlobe: return BodyLevel::Ears;
-    case hamcheek: return BodyLevel::Cheeks;
-    case hamlips: return BodyLevel::Lips;
-    case hamtongue: return BodyLevel::Tongue;
-    case hamteeth: return BodyLevel::Teeth;
-    case hamchin: return BodyLevel::Chin;
-    case hamunderchin: return BodyLevel::UnderChin;
-    case hamneck: return BodyLevel::Neck;
-    case hamshouldertop: return BodyLevel::ShoulderTop;
-    case hamshoulders: return BodyLevel::Shoulders;
-    case hamchest: return BodyLevel::Chest;
-    case hamstomach: return BodyLevel::Stomach;
-    default: return BodyLevel::Belly;  // hambelowstomach
-  }
-}
 
-HandPlace place_of(char32_t c) {
-  switch (c) {
-    case hamupperarm: return HandPlace::UpperArm;
-    case hamelbow: return HandPlace::Elbow;
-    case hamelbowinside: return HandPlace::ElbowInside;
-    case hamlowerarm: return HandPlace::Forearm;
-    case hamwristback: case hamwristtoback: return HandPlace::WristBack;
-    case hamwristpulse: case hamwristtopulse: return HandPlace::Wrist;
-    case hamthumbball: return HandPlace::ThumbBall;
-    case hampalm: return HandPlace::Palm;
-    case hamhandback: return HandPlace::BackOfHand;
-    case hamthumbside: case hamwristtothumb: return HandPlace::ThumbSide;
-    case hampinkyside: case hamwristtopinky: return HandPlace::LittleSide;
-    case hamfingertip: return HandPlace::Fingertip;
-    case hamfingernail: return HandPlace::FingerNail;
-    case hamfingerpad: return HandPlace::FingerPad;
-    case hamfingermidjoint: return HandPlace::FingerMiddleJoint;
-    case hamfingerbase: return HandPlace::FingerBase;
-    default: return HandPlace::FingerSide;  // hamfingerside
-  }
-}
 
-Contact contact_of(char32_t c) {
-  switch (c) {
-    case hamclose: return Contact::Close;
-    case hamtouch: return Contact::Touch;
-    case haminterlock: return Contact::Interlock;
-    case hamcross: return Contact::Cross;
-    case hamarmextended: return Contact::ArmExtended;
-    case hambehind: return Contact::Behind;
-    default: return Contact::Brush;  // hambrushing
-  }
-}
 
 bool operator!=(const Orientation& a, const Orientation& b) {
   return a.extended_finger != b.extended_finger || a.palm != b.palm || a.seed_palm != b.seed_palm;

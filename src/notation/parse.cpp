@@ -4,6 +4,7 @@
 
 #include "notation/formula.h"
 #include "notation/hamnosys.h"
+#include "notation/sigml.h"
 #include "notation/text_position.h"
 
 namespace sw::notation {
@@ -78,16 +79,12 @@ std::vector<SignParse> parse_signs(std::string_view text, NotationFormat format)
       return parse_formula_text(text);
     case NotationFormat::HamNoSys:
       return parse_hamnosys_text(text);
-    default: {
-      SignParse none;
-      const LineIndex index(text);
-      none.diagnostics.push_back(index.make(0, 0, format_name(format),
-                                            std::string("expected a notation this build reads "
-                                                        "(formula, hamnosys), found '") +
-                                                format_name(format) + "'"));
-      return {none};
-    }
+    case NotationFormat::HSiGML:
+    case NotationFormat::GSiGML:
+      // One reader for both: a SiGML document may mix hns_sign and hamgestural_sign.
+      return parse_sigml_text(text);
   }
+  return {};
 }
 
 ParseOutcome parse_notation(std::string_view text, NotationFormat format) {
