@@ -76,6 +76,7 @@ class Reader {
   }
 
   bool read(SignSpec* sign) {
+    if (too_deep_) return false;
     std::size_t i = 0;
     const std::size_t end = s_.size();
     // Prefix: two-handed operators and a pending alternation.
@@ -199,6 +200,12 @@ class Reader {
     for (std::size_t i = 0; i < s_.size(); ++i) {
       const char32_t c = s_[i].code;
       if (closer_of(c)) {
+        if (open.size() >= kMaxGroupDepth) {
+          error(i, "groups nest deeper than " + std::to_string(kMaxGroupDepth) +
+                       " levels (the reader's limit; real signs nest fewer than 5)");
+          too_deep_ = true;
+          return;
+        }
         open.push_back(i);
       } else if (is_closer(c)) {
         if (!open.empty() && closer_of(s_[open.back()].code) == c) {
@@ -779,6 +786,10 @@ class Reader {
   std::vector<Diagnostic>* diags_;
   std::vector<std::size_t> match_;
   std::vector<bool> skip_;
+  // The reader recurses once per group level: the limit keeps hostile input from exhausting the
+  // stack (WASM's is small).
+  static constexpr std::size_t kMaxGroupDepth = 32;
+  bool too_deep_ = false;
   bool alternate_all_ = false;
   bool reading_nondominant_ = false;  // inside the part after hamplus of an action group
   HandSpec initial_dominant_, initial_nondominant_;

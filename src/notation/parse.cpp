@@ -87,6 +87,27 @@ std::vector<SignParse> parse_signs(std::string_view text, NotationFormat format)
   return {};
 }
 
+std::string print_notation(const std::vector<SignSpec>& signs, NotationFormat format) {
+  switch (format) {
+    case NotationFormat::HSiGML: return print_hsigml(signs);
+    case NotationFormat::GSiGML: return print_gsigml(signs);
+    case NotationFormat::Formula:
+    case NotationFormat::HamNoSys: break;
+  }
+  std::string out;
+  for (const SignSpec& s : signs) {
+    if (format == NotationFormat::Formula) {
+      out += print_formula_line(s);
+    } else {
+      std::string gloss;
+      for (char c : s.gloss) gloss += (c == '=' || c == '#' || c == '\n' || c == '\r') ? '_' : c;
+      out += (gloss.empty() ? "" : gloss + " = ") + print_hamnosys(s, HamNoSysSpelling::Unicode);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 ParseOutcome parse_notation(std::string_view text, NotationFormat format) {
   ParseOutcome outcome;
   for (SignParse& sign : parse_signs(text, format)) {

@@ -8,7 +8,8 @@
 // prefixed name is just a name), or decode encodings other than UTF-8.
 //
 // Limit: elements nest at most kMaxXmlDepth deep, because the reader recurses per level and a
-// hostile document must not exhaust the (WASM: 64 KiB by default) stack; SiGML nests < 10 deep.
+// hostile document must not exhaust the stack (the G-SiGML reader recurses along); SiGML nests
+// fewer than 10 deep.
 #pragma once
 
 #include <cstddef>
@@ -20,7 +21,7 @@
 
 namespace sw::notation {
 
-constexpr int kMaxXmlDepth = 200;
+constexpr int kMaxXmlDepth = 100;
 
 struct XmlAttribute {
   std::string name;
