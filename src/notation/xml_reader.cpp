@@ -122,7 +122,7 @@ class XmlParser {
         else if (hex && c >= 'A' && c <= 'F') d = c - 'A' + 10;
         if (d < 0) return fail(start, "expected digits in the character reference '&" + std::string(e) + ";'");
         v = v * (hex ? 16 : 10) + static_cast<unsigned long>(d);
-        if (v > 0x10FFFF) return fail(start, "the character reference '&" + std::string(e) + ";' is beyond U+10FFFF");
+        if (v > 0x10FFFF) return fail(start, "expected a character reference up to U+10FFFF, found '&" + std::string(e) + ";'");
       }
       append_utf8(out, static_cast<char32_t>(v));
     } else {
@@ -158,7 +158,7 @@ class XmlParser {
       const std::size_t at = p_;
       if (!name(&a.name)) return false;
       for (const XmlAttribute& other : el->attributes) {
-        if (other.name == a.name) return fail(at, "the attribute '" + a.name + "' is given twice in <" + el->name + ">");
+        if (other.name == a.name) return fail(at, "expected each attribute once in <" + el->name + ">, found '" + a.name + "' a second time");
       }
       skip_space();
       if (!starts("=")) return fail(p_, "expected '=' after the attribute name '" + a.name + "', found " + found());
