@@ -1,6 +1,4 @@
-// Diagnostic helpers: the error test every caller uses and the one-line form the CLI and logs
-// print. (Written on the notation branch because its parsers need it first; the foundation
-// branch owns the contract in diagnostic.h.)
+// Diagnostic helpers: whether a list fails a parse, and the one-line form the CLI and logs print.
 #include "notation/diagnostic.h"
 
 namespace sw::notation {
@@ -13,10 +11,12 @@ bool has_error(const std::vector<Diagnostic>& diagnostics) {
 }
 
 std::string format_diagnostic(const Diagnostic& d) {
+  // "line 3, column 14: unknown symbol 'hamfoo'" — the symbol follows the message so that messages
+  // read as sentences ("unknown symbol", "expected ')' here") whatever the symbol is.
   std::string out = "line " + std::to_string(d.line) + ", column " + std::to_string(d.column) + ": ";
   if (d.severity == Severity::Warning) out += "warning: ";
-  out += d.message;
-  if (!d.symbol.empty()) out += " (symbol '" + d.symbol + "')";
+  out += d.message.empty() ? std::string("error") : d.message;
+  if (!d.symbol.empty()) out += " '" + d.symbol + "'";
   return out;
 }
 
