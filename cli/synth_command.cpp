@@ -16,27 +16,11 @@
 #include "synthesis/clip_export.h"
 #include "synthesis/phrase_text.h"
 #include "synthesis/signing_avatar.h"
+#include "project_root.h"
 #include "synthesis/synthesize.h"
 
 namespace sw::cli {
 namespace {
-
-// The project root: $SIGNWEAVE_ROOT, else two levels above the binary (build/native/), else cwd.
-std::string project_root() {
-  if (const char* env = std::getenv("SIGNWEAVE_ROOT")) return env;
-  char buf[4096];
-  ssize_t n = readlink("/proc/self/exe", buf, sizeof(buf) - 1);
-  if (n > 0) {
-    std::string exe(buf, static_cast<size_t>(n));
-    for (int up = 0; up < 3; ++up) {
-      size_t slash = exe.rfind('/');
-      if (slash == std::string::npos) break;
-      exe = exe.substr(0, slash);
-      if (std::ifstream(exe + "/models/signweave-avatar.glb").good()) return exe;
-    }
-  }
-  return ".";
-}
 
 bool read_file(const std::string& path, std::string* out) {
   std::ifstream in(path, std::ios::binary);
