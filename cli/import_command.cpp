@@ -6,6 +6,8 @@
 // Default: valid signs are written and rejected ones reported (exit 1 if any was rejected).
 // --strict: one rejected sign and nothing is written. --dry-run: check only, write nothing.
 #include "command.h"
+#include "project_root.h"
+#include "store/sign_validation.h"
 
 #ifdef SIGNWEAVE_HAS_STORE
 
@@ -45,6 +47,16 @@ int import_command(const std::vector<std::string>& args) {
   if (files.empty()) {
     std::fprintf(stderr, "usage: signweave import FILE|DIR... [--db PATH] [--strict] [--dry-run]\n");
     return 2;
+  }
+  {
+    // The same two-stage check as the server: parse, then synthesise on the project's avatar.
+    std::string avatar_error;
+    if (!sw::store::load_validation_avatar(sw::cli::project_root() + "/models/signweave-avatar.glb",
+                                           &avatar_error)) {
+      std::fprintf(stderr, "import: cannot load the avatar that validates signs: %s\n",
+                   avatar_error.c_str());
+      return 1;
+    }
   }
   try {
     std::unique_ptr<sw::store::Store> store = sw::store::Store::open(db_path);

@@ -27,6 +27,7 @@
 #include "http/http_server.h"
 #include "store/api_error.h"
 #include "store/data_import.h"
+#include "store/sign_validation.h"
 #include "store/store.h"
 
 namespace {
@@ -172,6 +173,17 @@ int main(int argc, char** argv) {
   sigaddset(&stop_signals, SIGINT);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
   signal(SIGPIPE, SIG_IGN);  // a client that hangs up mid-answer must not kill the server
+
+  // Every sign written is synthesised on the avatar the page plays (second stage of the check).
+  {
+    std::string avatar_error;
+    if (!sw::store::load_validation_avatar(flags.server.models_dir + "/signweave-avatar.glb",
+                                           &avatar_error)) {
+      std::fprintf(stderr, "signweave-server: cannot load the avatar that validates signs: %s\n",
+                   avatar_error.c_str());
+      return 1;
+    }
+  }
 
   std::unique_ptr<sw::store::Store> store;
   bool fresh = !file_exists(flags.db);

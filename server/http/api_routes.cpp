@@ -465,7 +465,7 @@ void ApiRoutes::import_signs(const httplib::Request& req, httplib::Response& res
 void ApiRoutes::healthz(const httplib::Request& req, httplib::Response& res) {
   check_params(req, {"deep"});
   json body{{"status", "ok"}, {"schema_version", store_.schema_version()},
-            {"signs", store_.count_live_signs()}, {"notation_parser", store::notation_parser_available()}};
+            {"signs", store_.count_live_signs()}, {"checks", store::synthesis_check_enabled() ? json::array({"parse", "synthesis"}) : json::array({"parse"})}};
   std::string deep = param(req, "deep");
   if (!deep.empty() && deep != "0") {
     std::string detail;

@@ -3,23 +3,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "notation/parse.h"
-#include "store/api_error.h"
+#include <memory>
 
-// The notation parsers land with the formula reader (src/notation/formula.h); before that this
-// build has the parse.h contract but no parser. The SignSpec -> JSON converter (cached as the
-// sign's compiled form) comes separately.
-#if __has_include("notation/formula.h")
-#define SIGNWEAVE_STORE_HAS_PARSER 1
-#else
-#define SIGNWEAVE_STORE_HAS_PARSER 0
-#endif
-#if __has_include("notation/sign_spec_json.h")
-#define SIGNWEAVE_STORE_HAS_SPEC_JSON 1
+#include "notation/parse.h"
 #include "notation/sign_spec_json.h"
-#else
-#define SIGNWEAVE_STORE_HAS_SPEC_JSON 0
-#endif
+#include "store/api_error.h"
+#include "synthesis/signing_avatar.h"
+#include "synthesis/synthesize.h"
 
 namespace sw::store {
 namespace {
@@ -35,9 +25,36 @@ bool known_format(const std::string& name) {
   return false;
 }
 
+// Set once before the server's threads start; read-only afterwards, so no lock is needed. The
+// Synthesizer keeps a pointer to the avatar, so both live on the heap and never move.
+struct ValidationAvatar {
+  synthesis::SigningAvatar avatar;
+  std::unique_ptr<synthesis::Synthesizer> synthesizer;
+};
+std::unique_ptr<ValidationAvatar>& validation_avatar() {
+  static std::unique_ptr<ValidationAvatar> instance;
+  return instance;
+}
+
 }  // namespace
 
-bool notation_parser_available() { return SIGNWEAVE_STORE_HAS_PARSER != 0; }
+bool load_validation_avatar(const std::string& glb_path, std::string* error) {
+  auto loaded = std::make_unique<ValidationAvatar>();
+  loaded->avatar = synthesis::load_signing_avatar_file(glb_path);
+  if (!loaded->avatar.ok()) {
+    *error = glb_path + ": " + loaded->avatar.error;
+    return false;
+  }
+  loaded->synthesizer = std::make_unique<synthesis::Synthesizer>(loaded->avatar.avatar);
+  if (!loaded->synthesizer->ok()) {
+    *error = glb_path + ": " + loaded->synthesizer->error();
+    return false;
+  }
+  validation_avatar() = std::move(loaded);
+  return true;
+}
+
+bool synthesis_check_enabled() { return validation_avatar() != nullptr; }
 
 ValidatedNotation validate_notation(const std::string& notation,
                                     const std::optional<std::string>& format) {
@@ -45,7 +62,6 @@ ValidatedNotation validate_notation(const std::string& notation,
     throw ApiError(400, "unknown notation format '" + *format + "'",
                    json{{"field", "format"}, {"allowed", kFormatNames}});
   }
-#if SIGNWEAVE_STORE_HAS_PARSER
   using namespace sw::notation;
   NotationFormat parsed_format;
   if (format) {
@@ -85,17 +101,22 @@ ValidatedNotation validate_notation(const std::string& notation,
                        " signs; a database entry is exactly one sign",
                    json{{"field", "notation"}, {"signs", outcome.signs.size()}});
   }
+  if (const auto& checker = validation_avatar()) {
+    const synthesis::SynthesisResult synthesised =
+        checker->synthesizer->sign(outcome.signs.front(), synthesis::SynthesisOptions{});
+    if (!synthesised.ok()) {
+      const synthesis::SynthesisError& first = synthesised.errors.front();
+      throw ApiError(422, "notation parses but cannot be signed: " + first.where + ": " + first.message,
+                     json{{"field", "notation"},
+                          {"format", format_name(parsed_format)},
+                          {"stage", "synthesis"},
+                          {"where", first.where}});
+    }
+  }
   ValidatedNotation result;
   result.format = format_name(parsed_format);
-#if SIGNWEAVE_STORE_HAS_SPEC_JSON
   result.compiled = json{{"spec", sw::notation::sign_to_json(outcome.signs.front())}}.dump();
-#endif
   return result;
-#else
-  (void)notation;
-  throw ApiError(503, "this server was built without the notation parser; signs cannot be checked",
-                 json{{"field", "notation"}});
-#endif
 }
 
 }  // namespace sw::store

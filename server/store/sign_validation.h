@@ -19,8 +19,13 @@ struct ValidatedNotation {
 ValidatedNotation validate_notation(const std::string& notation,
                                     const std::optional<std::string>& format);
 
-// True when this build links a notation parser (false only in a build without src/notation's
-// parsers, where every write is refused with 503 rather than stored unchecked).
-bool notation_parser_available();
+// The second stage of the check: the avatar every written sign must also synthesise on (a place
+// the avatar lacks, two hands each placed on the other, ...). Loaded once at start-up by the
+// server and by `signweave import`; false with `error` set when the file cannot be used, and the
+// caller refuses to start rather than store signs it cannot play. Until it is called, only the
+// parse stage runs (the store's own unit tests).
+bool load_validation_avatar(const std::string& glb_path, std::string* error);
+// True once load_validation_avatar succeeded (reported by /healthz).
+bool synthesis_check_enabled();
 
 }  // namespace sw::store

@@ -25,7 +25,8 @@ describe('startup', () => {
     const health = await request(server, 'GET', '/healthz');
     assert.equal(health.body.status, 'ok');
     assert.equal(health.body.signs, 20);
-    assert.equal(health.body.notation_parser, true);
+    // Every written sign is parsed and synthesised on the avatar (issue 5: the same core).
+    assert.deepEqual(health.body.checks, ['parse', 'synthesis']);
   });
 });
 

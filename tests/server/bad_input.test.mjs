@@ -99,6 +99,15 @@ test('notation errors: 422 with the parser message, line, column, offset and sym
   await refused('unknown language', post({ language: 'zzz', gloss: 'X', notation: validNotation() }), 422, /unknown sign language 'zzz'/);
 });
 
+test('a sign that parses but cannot be signed on the avatar: 422 from the synthesis stage', async () => {
+  // Each hand placed on the other: well-formed notation, but no body or space location to start
+  // from — the server must refuse it rather than store a sign the page cannot play.
+  const circular = 'R(H(flat), E(uo), P(l), Loc(hand, palm, touch)) L(H(flat), E(uo), P(r), Loc(hand, palm, touch))';
+  const refusal = await refused('hands on each other', post({ language: 'ase', gloss: 'CIRCULAR', notation: circular }), 422, /cannot be signed/);
+  assert.equal(refusal.detail.stage, 'synthesis');
+  assert.equal(refusal.detail.field, 'notation');
+});
+
 test('SQL injection strings are data, never SQL', async () => {
   const injections = ["'; DROP TABLE signs; --", "\" OR 1=1 --", "x' UNION SELECT hash FROM api_tokens --", "%' OR '%'='"];
   for (const text of injections) {

@@ -27,7 +27,7 @@ export async function startServer(options = {}) {
   const token = options.token ?? `test-admin-${randomBytes(16).toString('hex')}`;
   const web = options.web ?? path.join(dir, 'web-missing');
   const args = ['--port', '0', '--host', '127.0.0.1', '--db', db, '--data', options.data ?? fixturesData,
-    '--web', web, ...(options.models ? ['--models', options.models] : []), ...(options.extraArgs ?? [])];
+    '--web', web, '--models', options.models ?? path.join(repoRoot, 'models'), ...(options.extraArgs ?? [])];
   const proc = spawn(serverBin, args, {
     env: { ...process.env, SIGNWEAVE_ADMIN_TOKEN: token },
     stdio: ['ignore', 'pipe', 'pipe'],

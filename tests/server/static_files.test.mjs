@@ -8,7 +8,7 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import { after, before, test } from 'node:test';
 
-import { makeTempDir, startServer } from './server_harness.mjs';
+import { makeTempDir, repoRoot, startServer } from './server_harness.mjs';
 
 let server;
 let dir;
@@ -31,6 +31,8 @@ before(async () => {
   fs.writeFileSync(path.join(dir, 'outside.txt'), 'outside the web root');
   fs.symlinkSync(path.join(dir, 'outside.txt'), path.join(web, 'link-out.txt'));
   fs.writeFileSync(path.join(models, 'avatar.glb'), Buffer.from('glTF\x02\x00\x00\x00'));
+  // The server validates signs on the real avatar from the models directory.
+  fs.copyFileSync(path.join(repoRoot, 'models', 'signweave-avatar.glb'), path.join(models, 'signweave-avatar.glb'));
   server = await startServer({ dir, web, models });
 });
 after(async () => { await server?.stop(); });
