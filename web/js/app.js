@@ -1,0 +1,426 @@
+// app.js — the page's entry point and state: boots the renderer, the WebAssembly core and the
+// avatar with visible progress, routes the shareable URLs (#/sign/ID, #/phrase?text=…, #/editor),
+// wires the dictionary, phrase, editor, player and export controls, and runs the frame loop
+// (advance the clock → the core poses and skins → upload views → draw).
+//
+// Playback state is exposed for tests and tools as window.signweave.state
+// { currentSign, currentWord, time_s, playing, clipDuration_s, ready }.
+
+import { ApiClient } from './api_client.js';
+import { OrbitCamera, attachCameraControls } from './camera.js';
+import { Dictionary } from './dictionary.js';
+import { NotationEditor } from './editor.js';
+import { download, recordWebm, safeFileStem, webmSupported } from './export.js';
+import { PhrasePane, planTokens } from './phrase.js';
+import { Playback } from './playback.js';
+import { Renderer, WebGL2Unavailable } from './renderer.js';
+import { SigningCore } from './signing_core.js';
+
+const AVATAR_URL = 'models/signweave-avatar.glb';
+const $ = (id) => document.getElementById(id);
+
+const state = {
+  ready: false,
+  currentSign: null,     // gloss (or letter) of the segment under the play head
+  currentWord: null,     // word of the typed phrase being signed
+  time_s: 0,
+  playing: false,
+  clipDuration_s: 0,
+  error: null,
+  flavour: null,         // which WebAssembly build runs: 'simd' or 'scalar'
+};
+const metrics = {
+  firstSigningFrame_ms: null,   // performance.now() of the first frame drawn while a clip plays
+  frameWork_ms: 0,              // last frame's pose + skinning + upload on the main thread
+  frames: 0,
+};
+const api = new ApiClient();
+const camera = new OrbitCamera();
+const playback = new Playback();
+let renderer = null;
+let core = null;
+let source = null;              // what the clip was made from, to re-synthesise (left-handed, face)
+let clipLabel = 'signweave';
+let debugVisible = false;
+let poseDirty = true;
+let tokens = [];
+
+window.signweave = {
+  state, metrics, playback, camera, api,
+  get core() { return core; },
+  get renderer() { return renderer; },
+  playSign: (id) => { location.hash = `#/sign/${encodeURIComponent(id)}`; },
+  signPhrase: (text) => { location.hash = `#/phrase?text=${encodeURIComponent(text)}`; },
+};
+
+// ------------------------------------------------------------------------------------- messages
+function banner(text, kind = 'error') {
+  const el = $('banner');
+  el.hidden = !text;
+  el.textContent = text || '';
+  el.className = kind === 'info' ? 'banner info' : 'banner';
+}
+
+function setProgress(fraction, text) {
+  $('loading-progress').value = fraction;
+  if (text) $('loading').querySelector('.loading-text').textContent = text;
+}
+
+// ------------------------------------------------------------------------------------ loading
+async function fetchWithProgress(url, onFraction) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: ${response.status} ${response.statusText}`);
+  const total = Number(response.headers.get('Content-Length')) || 0;
+  if (!response.body || !total) return new Uint8Array(await response.arrayBuffer());
+  const reader = response.body.getReader();
+  const chunks = [];
+  let received = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    chunks.push(value);
+    received += value.length;
+    onFraction(Math.min(1, received / total));
+  }
+  const bytes = new Uint8Array(received);
+  let at = 0;
+  for (const c of chunks) { bytes.set(c, at); at += c.length; }
+  return bytes;
+}
+
+async function boot() {
+  try {
+    renderer = new Renderer($('view'));
+  } catch (err) {
+    const message = err instanceof WebGL2Unavailable
+      ? 'This browser cannot draw the avatar: WebGL2 is missing or disabled. Try a current Firefox, Chrome, Edge or Safari, or enable hardware acceleration.'
+      : `The 3D view could not start: ${err.message}`;
+    fail(message);
+    return;
+  }
+  let coreFraction = 0, avatarFraction = 0;
+  const progress = () => setProgress(0.5 * coreFraction + 0.5 * avatarFraction, 'Loading the signer…');
+  const languagesPromise = loadLanguages();
+  let avatarBytes;
+  try {
+    [core, avatarBytes] = await Promise.all([
+      SigningCore.create({ onProgress: (f) => { coreFraction = f; progress(); } }),
+      fetchWithProgress(AVATAR_URL, (f) => { avatarFraction = f; progress(); }),
+    ]);
+  } catch (err) {
+    fail(err instanceof TypeError
+      ? 'The Signweave server cannot be reached, so the signer cannot load. Is it running?'
+      : `Loading failed: ${err.message}`);
+    return;
+  }
+  state.flavour = core.flavour;
+  const avatarError = core.loadAvatar(avatarBytes);
+  if (avatarError) { fail(`The avatar could not be loaded: ${avatarError}`); return; }
+  const info = core.info;
+  renderer.setMesh({ vertexCount: info.vertex_count, indices: core.indices(), primitives: info.primitives, materials: info.materials });
+  renderer.bodyHeight_m = info.height_m || 1.7;
+  camera.fitTo(info.height_m);
+  setupFace(info);
+  await languagesPromise;
+  setProgress(1);
+  $('loading').hidden = true;
+  state.ready = true;
+  route();
+}
+
+function fail(message) {
+  state.error = message;
+  banner(message);
+  $('loading').querySelector('.loading-text').textContent = message;
+  $('loading-progress').hidden = true;
+}
+
+async function loadLanguages() {
+  const select = $('language');
+  try {
+    const languages = await api.languages();
+    const saved = localStorage.getItem('signweave.lang');
+    select.replaceChildren(...languages.map((l) => {
+      const code = l.code || l.id || l.lang;
+      const option = new Option(l.name ? `${l.name}` : code, code);
+      return option;
+    }));
+    if (saved && languages.some((l) => (l.code || l.id || l.lang) === saved)) select.value = saved;
+  } catch (err) {
+    banner(err.kind === 'unreachable'
+      ? 'The Signweave server cannot be reached: search and phrases are unavailable. The editor still works offline.'
+      : `The server answered with an error: ${err.message}`);
+  }
+}
+
+const language = () => $('language').value || '';
+$('language').addEventListener('change', () => {
+  localStorage.setItem('signweave.lang', language());
+  dictionary.schedule();
+});
+
+// -------------------------------------------------------------------------------- the clip
+function synthesisOptions() {
+  const face = $('face-controls');
+  const options = { left_handed: $('left-handed').checked };
+  if (!face.hidden) {
+    options.emotion = $('emotion').value;
+    options.intensity = Number($('intensity').value);
+    options.mouthing = $('mouthing').checked;
+  }
+  return options;
+}
+
+function applyResult(result, { autoplay = true } = {}) {
+  if (!result.ok) return result;
+  playback.setClip(result.duration_s, result.segments || []);
+  poseDirty = true;
+  if (autoplay) playback.play();
+  return result;
+}
+
+function playNotation(text, format, label, { loop = true } = {}) {
+  if (!core) return { ok: false, errors: [{ message: 'the signer is still loading' }] };
+  source = { kind: 'notation', text, format };
+  clipLabel = label || 'sign';
+  playback.loop = loop;
+  $('loop').checked = loop;
+  return applyResult(core.setNotation(text, format, synthesisOptions()));
+}
+
+function playPlan(plan) {
+  if (!core) return { ok: false, errors: [{ message: 'the signer is still loading' }] };
+  source = { kind: 'phrase', plan };
+  tokens = planTokens(plan);
+  clipLabel = tokens.map((t) => t.word).join('_') || 'phrase';
+  playback.loop = $('loop').checked;
+  return applyResult(core.setPhrase(plan, synthesisOptions()));
+}
+
+function resynthesise() {
+  if (!core || !source) return;
+  const t = playback.time_s, wasPlaying = playback.playing;
+  const result = source.kind === 'phrase'
+    ? core.setPhrase(source.plan, synthesisOptions())
+    : core.setNotation(source.text, source.format, synthesisOptions());
+  if (!result.ok) return;
+  playback.setClip(result.duration_s, result.segments || []);
+  playback.seek(Math.min(t, result.duration_s));
+  if (wasPlaying) playback.play();
+  poseDirty = true;
+}
+
+// ------------------------------------------------------------------------------------ panes
+const dictionary = new Dictionary({
+  input: $('search'), status: $('search-status'), results: $('results'), page: $('sign-page'),
+  gloss: $('sign-gloss'), languageLabel: $('sign-language'), share: $('sign-share'),
+  keywords: $('sign-keywords'), format: $('sign-format'), notation: $('sign-notation'),
+}, {
+  api, language,
+  onOpen: (sign) => {
+    phrase.clearCaption();
+    tokens = [];
+    const result = playNotation(sign.notation, sign.format, sign.gloss, { loop: true });
+    if (!result.ok) dictionary.setStatus(`This sign cannot be played: ${describeFailure(result)}`, true);
+  },
+});
+
+const phrase = new PhrasePane({
+  form: $('phrase-form'), text: $('phrase-text'), status: $('phrase-status'), plan: $('plan'), caption: $('caption'),
+}, { api, language, onPlan: playPlan });
+
+const editor = new NotationEditor({
+  textarea: $('editor-text'), highlight: $('editor-highlight'), format: $('editor-format'),
+  gloss: $('editor-gloss'), list: $('editor-diagnostics'), keywords: $('editor-keywords'),
+  token: $('editor-token'), saveButton: $('editor-save'), saveStatus: $('editor-save-status'),
+}, {
+  preview: (text, format) => {
+    if (!core) return { ok: false, diagnostics: [], errors: [{ message: 'the signer is still loading' }] };
+    const result = playNotation(text, format, $('editor-gloss').value || 'preview', { loop: true });
+    return result;
+  },
+  save: ({ id, revision, text, format, gloss, keywords, token }) => api.saveSign({
+    id, revision, token,
+    fields: { gloss, language: language(), notation: text, format, keywords },
+  }),
+});
+
+$('sign-edit').addEventListener('click', () => {
+  const s = dictionary.current;
+  if (!s) return;
+  location.hash = '#/editor';
+  editor.load({ text: s.notation, format: s.format, gloss: s.gloss, keywords: s.keywords, id: s.id, revision: s.revision });
+});
+
+function describeFailure(result) {
+  const first = (result.diagnostics || []).find((d) => d.severity !== 'warning') || (result.errors || [])[0];
+  return first ? first.message : 'unknown error';
+}
+
+// ----------------------------------------------------------------------------------- routing
+function showPane(name) {
+  for (const pane of document.querySelectorAll('.pane')) pane.hidden = pane.dataset.pane !== name;
+  for (const tab of document.querySelectorAll('.tab')) {
+    if (tab.dataset.tab === name) tab.setAttribute('aria-current', 'page');
+    else tab.removeAttribute('aria-current');
+  }
+}
+
+function route() {
+  const hash = location.hash.replace(/^#/, '') || '/';
+  const [path, query = ''] = hash.split('?');
+  const params = new URLSearchParams(query);
+  if (path.startsWith('/sign/')) {
+    showPane('dictionary');
+    if (state.ready) dictionary.open(decodeURIComponent(path.slice('/sign/'.length)));
+  } else if (path === '/phrase') {
+    showPane('phrase');
+    const text = params.get('text');
+    if (text && state.ready) phrase.sign(text);
+  } else if (path === '/editor') {
+    showPane('editor');
+    if (state.ready) editor.schedule(0);
+  } else {
+    showPane('dictionary');
+  }
+}
+window.addEventListener('hashchange', route);
+
+// ------------------------------------------------------------------------------------ player UI
+$('play').addEventListener('click', () => playback.toggle());
+$('loop').addEventListener('change', (e) => { playback.loop = e.target.checked; });
+$('speed').addEventListener('change', (e) => playback.setSpeed(e.target.value));
+$('left-handed').addEventListener('change', resynthesise);
+$('timeline').addEventListener('input', (e) => {
+  playback.seek(Number(e.target.value) * playback.duration_s);
+  poseDirty = true;
+});
+document.addEventListener('keydown', (e) => {
+  // Space toggles playback unless the user is typing.
+  if (e.key === ' ' && !/^(INPUT|TEXTAREA|SELECT|BUTTON|SUMMARY)$/.test(e.target.tagName)) {
+    e.preventDefault();
+    playback.toggle();
+  }
+});
+playback.onChange(() => {
+  const play = $('play');
+  play.textContent = playback.playing ? '❚❚' : '▶';
+  play.setAttribute('aria-label', playback.playing ? 'Pause' : 'Play');
+  poseDirty = true;
+});
+
+for (const button of document.querySelectorAll('[data-preset]')) {
+  button.addEventListener('click', () => camera.applyPreset(button.dataset.preset));
+}
+attachCameraControls($('view'), camera, (name) => camera.applyPreset(name));
+$('debug-toggle').addEventListener('click', (e) => {
+  debugVisible = !debugVisible;
+  e.currentTarget.setAttribute('aria-pressed', String(debugVisible));
+  poseDirty = true;
+});
+
+function setupFace(info) {
+  const face = info.face;
+  const controls = $('face-controls');
+  if (!face || !Array.isArray(face.emotions) || !face.emotions.length) { controls.hidden = true; return; }
+  $('emotion').replaceChildren(...face.emotions.map((e) => new Option(e, e)));
+  controls.hidden = false;
+  for (const id of ['emotion', 'intensity', 'mouthing']) $(id).addEventListener('change', resynthesise);
+}
+
+// ------------------------------------------------------------------------------------ export
+$('export-bvh').addEventListener('click', () => {
+  if (!core || !source) return;
+  download(core.exportBvh(), `${safeFileStem(clipLabel)}.bvh`, 'text/plain');
+});
+$('export-glb').addEventListener('click', () => {
+  if (!core || !source) return;
+  download(core.exportGlb(), `${safeFileStem(clipLabel)}.glb`, 'model/gltf-binary');
+});
+if (!webmSupported()) $('export-webm').hidden = true;
+$('export-webm').addEventListener('click', async (e) => {
+  if (!core || !source) return;
+  const button = e.currentTarget;
+  button.disabled = true;
+  button.textContent = 'Recording…';
+  try {
+    const blob = await recordWebm($('view'), () => new Promise((resolve) => {
+      const wasLoop = playback.loop;
+      playback.loop = false;
+      playback.seek(0);
+      playback.play();
+      const check = () => (playback.playing ? requestAnimationFrame(check) : (playback.loop = wasLoop, resolve()));
+      requestAnimationFrame(check);
+    }));
+    download(blob, `${safeFileStem(clipLabel)}.webm`, 'video/webm');
+  } catch (err) {
+    banner(err.message);
+  } finally {
+    button.disabled = false;
+    button.textContent = 'Video (WebM)';
+  }
+});
+
+// --------------------------------------------------------------------------------- the frame loop
+let last = performance.now();
+function frame(now) {
+  const dt = (now - last) / 1000;
+  last = now;
+  if (playback.tick(dt)) poseDirty = true;
+  camera.update(dt);
+  if (core && state.ready) {
+    if (poseDirty) {
+      const start = performance.now();
+      const views = core.update(playback.time_s);
+      renderer.upload(views.positions, views.normals);
+      metrics.frameWork_ms = performance.now() - start;
+      if (debugVisible) renderer.setDebugGeometry(views.jointPositions, core.info.parents, views.anchorPositions);
+      updateFraming(views.jointPositions);
+      poseDirty = false;
+    }
+    renderer.draw(camera, { showDebug: debugVisible });
+    metrics.frames++;
+    if (metrics.firstSigningFrame_ms === null && playback.playing && playback.time_s > 0) {
+      metrics.firstSigningFrame_ms = performance.now();
+    }
+  } else if (renderer) {
+    renderer.draw(camera);
+  }
+  publishState();
+  requestAnimationFrame(frame);
+}
+
+// The hands close-up preset follows the hands; the floor shadow follows the hips.
+function updateFraming(jointPositions) {
+  const j = core.info.named;
+  if (!j) return;
+  const at = (i) => [jointPositions[i * 3], jointPositions[i * 3 + 1], jointPositions[i * 3 + 2]];
+  if (j.leftHand >= 0 && j.rightHand >= 0) {
+    const l = at(j.leftHand), r = at(j.rightHand);
+    camera.handsCentre = [(l[0] + r[0]) / 2, (l[1] + r[1]) / 2, (l[2] + r[2]) / 2];
+  }
+  if (j.hips >= 0) {
+    const h = at(j.hips);
+    renderer.shadowCentre = [h[0], h[2]];
+  }
+}
+
+let shownWord = -2;
+function publishState() {
+  const segment = playback.currentSegment();
+  const wordIndex = playback.currentWordIndex();
+  state.time_s = playback.time_s;
+  state.playing = playback.playing;
+  state.clipDuration_s = playback.duration_s;
+  state.currentSign = segment && segment.kind !== 'transition' && segment.kind !== 'pause' ? segment.label : null;
+  state.currentWord = wordIndex >= 0 && tokens[wordIndex] ? tokens[wordIndex].word : null;
+  if (wordIndex !== shownWord) { phrase.highlight(wordIndex); shownWord = wordIndex; }
+  const timeline = $('timeline');
+  if (document.activeElement !== timeline || playback.playing) {
+    timeline.value = playback.duration_s > 0 ? String(playback.time_s / playback.duration_s) : '0';
+  }
+  $('time').textContent = `${playback.time_s.toFixed(2)} s`;
+}
+
+requestAnimationFrame(frame);
+boot();
