@@ -48,7 +48,7 @@ export class OrbitCamera {
       }
       case 'front':
       default:
-        return { yaw: 0, pitch: 0.05, distance: 1.5 * h, target: torso };
+        return { yaw: 0, pitch: 0.1, distance: 1.6 * h, target: [0, 0.62 * h, 0] };
     }
   }
 

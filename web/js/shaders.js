@@ -36,7 +36,7 @@ void main() {
 }`;
 
 export const FLOOR_FS = `#version 300 es
-precision mediump float;
+precision highp float;
 in vec2 vLocal;
 uniform float uRadius;
 uniform vec2 uShadowCentre;   // floor position under the hips (x, z)
