@@ -8,10 +8,11 @@
 
 import { ApiClient } from './api_client.js';
 import { OrbitCamera, attachCameraControls } from './camera.js';
-import { Dictionary } from './dictionary.js';
+import { Dictionary, normalizeSign } from './dictionary.js';
 import { NotationEditor } from './editor.js';
 import { download, recordWebm, safeFileStem, webmSupported } from './export.js';
-import { PhrasePane, planTokens } from './phrase.js';
+import { PhrasePane, phraseItems } from './phrase.js';
+import { transformPoint } from './mat4.js';
 import { Playback } from './playback.js';
 import { Renderer, WebGL2Unavailable } from './renderer.js';
 import { SigningCore } from './signing_core.js';
@@ -32,6 +33,7 @@ const state = {
 const metrics = {
   firstSigningFrame_ms: null,   // performance.now() of the first frame drawn while a clip plays
   frameWork_ms: 0,              // last frame's pose + skinning + upload on the main thread
+  frameWorkSamples: [],         // the last 240 of them (bench/web_bench.mjs reads percentiles)
   frames: 0,
 };
 const api = new ApiClient();
@@ -50,7 +52,27 @@ window.signweave = {
   get core() { return core; },
   get renderer() { return renderer; },
   playSign: (id) => { location.hash = `#/sign/${encodeURIComponent(id)}`; },
-  signPhrase: (text) => { location.hash = `#/phrase?text=${encodeURIComponent(text)}`; },
+  // Where a joint (canonical name) is drawn, in drawing-buffer pixels with the origin bottom-left
+  // (readPixels' convention); for tests that look at the hands.
+  projectJoint: (name) => {
+    const index = core?.info?.named?.[name];
+    if (index === undefined || index < 0) return null;
+    const p = core.current().jointPositions;
+    const clip = transformPoint(camera.viewProjection, [p[index * 3], p[index * 3 + 1], p[index * 3 + 2]]);
+    const canvas = $('view');
+    return { x: (clip[0] * 0.5 + 0.5) * canvas.width, y: (clip[1] * 0.5 + 0.5) * canvas.height };
+  },
+  // Statistics of a rectangle of the drawn canvas (drawing-buffer pixels, origin bottom-left).
+  readRegion: (x, y, width, height) => {
+    const gl = renderer.gl;
+    const x0 = Math.max(0, Math.round(x)), y0 = Math.max(0, Math.round(y));
+    const w = Math.max(1, Math.min(gl.drawingBufferWidth - x0, Math.round(width)));
+    const h = Math.max(1, Math.min(gl.drawingBufferHeight - y0, Math.round(height)));
+    const pixels = new Uint8Array(w * h * 4);
+    gl.readPixels(x0, y0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    return { x: x0, y: y0, width: w, height: h, pixels: Array.from(pixels) };
+  },
+  signPhrase: (text) => { location.hash = phraseHash(text); },
 };
 
 // ------------------------------------------------------------------------------------- messages
@@ -154,6 +176,7 @@ async function loadLanguages() {
 }
 
 const language = () => $('language').value || '';
+const phraseHash = (text) => `#/phrase?text=${encodeURIComponent(text)}${language() ? `&lang=${encodeURIComponent(language())}` : ''}`;
 $('language').addEventListener('change', () => {
   localStorage.setItem('signweave.lang', language());
   dictionary.schedule();
@@ -182,26 +205,39 @@ function applyResult(result, { autoplay = true } = {}) {
 function playNotation(text, format, label, { loop = true } = {}) {
   if (!core) return { ok: false, errors: [{ message: 'the signer is still loading' }] };
   source = { kind: 'notation', text, format };
+  tokens = [];
   clipLabel = label || 'sign';
   playback.loop = loop;
   $('loop').checked = loop;
   return applyResult(core.setNotation(text, format, synthesisOptions()));
 }
 
-function playPlan(plan) {
+// A cache of sign notations by id: a phrase often repeats letters, and re-signing a phrase with
+// another option must not refetch.
+const signCache = new Map();
+async function fetchSign(id) {
+  if (!signCache.has(id)) {
+    signCache.set(id, api.sign(id).then(({ sign }) => normalizeSign(sign)).catch((err) => { signCache.delete(id); throw err; }));
+  }
+  return signCache.get(id);
+}
+
+async function playPlan(plan, planned) {
   if (!core) return { ok: false, errors: [{ message: 'the signer is still loading' }] };
-  source = { kind: 'phrase', plan };
-  tokens = planTokens(plan);
-  clipLabel = tokens.map((t) => t.word).join('_') || 'phrase';
+  const { items, missing } = await phraseItems(planned, fetchSign);
+  source = { kind: 'phrase', items };
+  tokens = planned;
+  clipLabel = planned.map((t) => t.word).join('_') || 'phrase';
   playback.loop = $('loop').checked;
-  return applyResult(core.setPhrase(plan, synthesisOptions()));
+  const result = applyResult(core.setPhrase({ items }, synthesisOptions()));
+  return { ...result, missing };
 }
 
 function resynthesise() {
   if (!core || !source) return;
   const t = playback.time_s, wasPlaying = playback.playing;
   const result = source.kind === 'phrase'
-    ? core.setPhrase(source.plan, synthesisOptions())
+    ? core.setPhrase({ items: source.items }, synthesisOptions())
     : core.setNotation(source.text, source.format, synthesisOptions());
   if (!result.ok) return;
   playback.setClip(result.duration_s, result.segments || []);
@@ -219,7 +255,6 @@ const dictionary = new Dictionary({
   api, language,
   onOpen: (sign) => {
     phrase.clearCaption();
-    tokens = [];
     const result = playNotation(sign.notation, sign.format, sign.gloss, { loop: true });
     if (!result.ok) dictionary.setStatus(`This sign cannot be played: ${describeFailure(result)}`, true);
   },
@@ -227,7 +262,7 @@ const dictionary = new Dictionary({
 
 const phrase = new PhrasePane({
   form: $('phrase-form'), text: $('phrase-text'), status: $('phrase-status'), plan: $('plan'), caption: $('caption'),
-}, { api, language, onPlan: playPlan });
+}, { api, language, onPlan: playPlan, hashFor: (text) => phraseHash(text) });
 
 const editor = new NotationEditor({
   textarea: $('editor-text'), highlight: $('editor-highlight'), format: $('editor-format'),
@@ -270,6 +305,8 @@ function route() {
   const hash = location.hash.replace(/^#/, '') || '/';
   const [path, query = ''] = hash.split('?');
   const params = new URLSearchParams(query);
+  const lang = params.get('lang');
+  if (lang && [...$('language').options].some((o) => o.value === lang)) $('language').value = lang;
   if (path.startsWith('/sign/')) {
     showPane('dictionary');
     if (state.ready) dictionary.open(decodeURIComponent(path.slice('/sign/'.length)));
@@ -374,6 +411,8 @@ function frame(now) {
       const views = core.update(playback.time_s);
       renderer.upload(views.positions, views.normals);
       metrics.frameWork_ms = performance.now() - start;
+      metrics.frameWorkSamples.push(metrics.frameWork_ms);
+      if (metrics.frameWorkSamples.length > 240) metrics.frameWorkSamples.shift();
       if (debugVisible) renderer.setDebugGeometry(views.jointPositions, core.info.parents, views.anchorPositions);
       updateFraming(views.jointPositions);
       poseDirty = false;

@@ -3,33 +3,73 @@
 // a list, handed to the core to synthesise into one clip, and a caption that highlights the word
 // being signed. URL: #/phrase?text=…
 
-// The lookup plan's tokens as the page shows them: { word, kind: sign|fingerspell|pause, gloss, letters }.
+// The lookup plan's tokens (server/store/search_index.h LookupToken) as the page uses them:
+// { word, kind: sign|fingerspell|pause, signId, gloss, letters: [{letter, signId}], pause_s }.
 export function planTokens(plan) {
-  const tokens = plan.tokens || plan.items || plan.plan || [];
-  return tokens.map((t) => {
-    const kind = t.kind || t.type || (t.sign ? 'sign' : t.letters ? 'fingerspell' : 'pause');
+  return (plan.tokens || []).map((t) => {
+    const kind = normalKind(t.type ?? t.kind);
     return {
-      word: t.word ?? t.text ?? t.token ?? '',
+      word: t.text ?? t.word ?? '',
       kind,
-      gloss: t.sign?.gloss ?? t.gloss ?? '',
-      letters: (t.letters || []).map((l) => (typeof l === 'string' ? l : l.letter ?? l.gloss ?? '')),
+      signId: t.sign_id ?? null,
+      gloss: t.gloss ?? '',
+      letters: (t.letters || []).map((l) => ({ letter: l.letter, signId: l.sign_id ?? null, gloss: l.gloss ?? '' })),
+      pause_s: t.pause_s ?? 0,
     };
   });
 }
 
+function normalKind(type) {
+  const k = String(type || '').toLowerCase();
+  if (k.startsWith('finger') || k === 'spell' || k === 'letters') return 'fingerspell';
+  if (k === 'pause' || k === 'punctuation') return 'pause';
+  return 'sign';
+}
+
+// The core's phrase items: every sign and letter with its notation (fetched by id, cached), and
+// pauses. `word_index` is the token's index, which the clip's segments carry back for the caption.
+export async function phraseItems(tokens, fetchSign) {
+  const items = [];
+  const missing = [];
+  for (let i = 0; i < tokens.length; i++) {
+    const t = tokens[i];
+    if (t.kind === 'pause') {
+      items.push({ kind: 'pause', label: t.word, word_index: i, pause_s: t.pause_s });
+    } else if (t.kind === 'sign') {
+      items.push({ kind: 'sign', signId: t.signId, label: t.gloss || t.word, word_index: i });
+    } else {
+      for (const l of t.letters) {
+        if (l.signId === null) { missing.push(l.letter); continue; }
+        items.push({ kind: 'letter', signId: l.signId, label: l.letter, word_index: i });
+      }
+    }
+  }
+  const signs = new Map();
+  await Promise.all([...new Set(items.filter((it) => it.signId !== undefined && it.kind !== 'pause').map((it) => it.signId))]
+    .map(async (id) => { signs.set(id, await fetchSign(id)); }));
+  for (const it of items) {
+    if (it.kind === 'pause') continue;
+    const sign = signs.get(it.signId);
+    it.notation = sign.notation;
+    it.format = sign.format;
+    delete it.signId;
+  }
+  return { items, missing };
+}
+
 export class PhrasePane {
-  constructor({ form, text, status, plan, caption }, { api, language, onPlan }) {
+  constructor({ form, text, status, plan, caption }, { api, language, onPlan, hashFor }) {
     this.el = { form, text, status, plan, caption };
     this.api = api;
     this.language = language;
-    this.onPlan = onPlan;       // (plan) -> { ok, errors, segments } after the core synthesised it
+    this.onPlan = onPlan;       // async (plan, tokens) -> { ok, errors, duration_s } once the core synthesised it
     this.tokens = [];
     this.controller = null;
     form.addEventListener('submit', (e) => {
       e.preventDefault();
       const value = text.value.trim();
       if (!value) return;
-      const target = `#/phrase?text=${encodeURIComponent(value)}`;
+      const target = hashFor(value);
       if (location.hash === target) this.sign(value);
       else location.hash = target;
     });
@@ -54,12 +94,21 @@ export class PhrasePane {
     if (controller.signal.aborted) return null;
     this.tokens = planTokens(plan);
     this.renderPlan();
-    const result = this.onPlan(plan);
+    let result;
+    try {
+      result = await this.onPlan(plan, this.tokens);
+    } catch (err) {
+      this.setStatus(err.message, true);
+      return null;
+    }
+    if (controller.signal.aborted) return null;
     if (!result.ok) {
       this.setStatus(`The phrase could not be signed: ${(result.errors || []).map((e) => e.message).join('; ')}`, true);
     } else {
       const spelled = this.tokens.filter((t) => t.kind === 'fingerspell').length;
-      this.setStatus(`${this.tokens.filter((t) => t.kind !== 'pause').length} words, ${spelled} fingerspelled · ${result.duration_s.toFixed(1)} s`);
+      const words = this.tokens.filter((t) => t.kind !== 'pause').length;
+      const unspellable = result.missing?.length ? ` · no alphabet sign for ${result.missing.join(' ')}` : '';
+      this.setStatus(`${words} word${words === 1 ? '' : 's'}, ${spelled} fingerspelled · ${result.duration_s.toFixed(1)} s${unspellable}`);
     }
     return { plan, result };
   }
@@ -74,7 +123,7 @@ export class PhrasePane {
         li.textContent = `${t.word} → ${t.gloss} `;
         kind.textContent = 'sign';
       } else if (t.kind === 'fingerspell') {
-        li.textContent = `${t.word} → ${t.letters.join('-')} `;
+        li.textContent = `${t.word} → ${t.letters.map((l) => l.letter).join('-')} `;
         kind.textContent = 'fingerspelled';
       } else {
         li.textContent = `${t.word || '…'} `;
