@@ -1,0 +1,35 @@
+// The synthetic humanoid used by benchmarks and parity cases (skeleton/synthetic_humanoid.h).
+#include "skeleton/synthetic_humanoid.h"
+
+#include <gtest/gtest.h>
+
+namespace sw::skeleton {
+namespace {
+
+TEST(SyntheticHumanoid, HasSixtyFiveValidVrmNamedJoints) {
+  const Skeleton s = make_synthetic_humanoid();
+  EXPECT_EQ(s.joint_count(), 65);
+  EXPECT_EQ(s.validate(), "");
+  for (const char* name : {"hips", "head", "leftHand", "rightLittleTip", "leftThumbMetacarpal", "rightToes"}) {
+    EXPECT_GE(s.find(name), 0) << name;
+  }
+  // +X is the signer's left.
+  EXPECT_GT(s.joints[static_cast<std::size_t>(s.find("leftUpperArm"))].rest.translation.x, 0.0f);
+}
+
+TEST(SyntheticHumanoid, PoseIsDeterministicAndSeedDependent) {
+  const Skeleton s = make_synthetic_humanoid();
+  const auto a = make_synthetic_pose(s, 42), b = make_synthetic_pose(s, 42), c = make_synthetic_pose(s, 43);
+  ASSERT_EQ(a.size(), 65u);
+  bool differs = false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].rotation, b[i].rotation);
+    EXPECT_NEAR(glm::length(a[i].rotation), 1.0f, 1e-5f);
+    differs = differs || a[i].rotation != c[i].rotation;
+    EXPECT_EQ(a[i].translation, s.joints[i].rest.translation);
+  }
+  EXPECT_TRUE(differs);
+}
+
+}  // namespace
+}  // namespace sw::skeleton
