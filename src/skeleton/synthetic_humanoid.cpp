@@ -85,8 +85,13 @@ std::vector<math::Transform> make_synthetic_pose(const Skeleton& skeleton, std::
   std::uint32_t state = seed;
   for (const Joint& j : skeleton.joints) {
     math::Transform t = j.rest;
-    const glm::vec3 axis(unit_hash(state) - 0.5f, unit_hash(state) - 0.5f, unit_hash(state) - 0.5f);
+    // One draw per statement: the evaluation order of function arguments is unspecified (g++ and
+    // clang differ), and the pose must be the same natively and in WASM.
+    const float ax = unit_hash(state) - 0.5f;
+    const float ay = unit_hash(state) - 0.5f;
+    const float az = unit_hash(state) - 0.5f;
     const float angle = (2.0f * unit_hash(state) - 1.0f) * max_angle_rad;
+    const glm::vec3 axis(ax, ay, az);
     const float len = glm::length(axis);
     if (len > 1e-3f) t.rotation = glm::angleAxis(angle, axis / len) * t.rotation;
     pose.push_back(t);
