@@ -17,7 +17,7 @@ try {
   server = await startServer();
   browser = await launchBrowser();
   const list = await (await fetch(`${server.base}/api/signs?q=&limit=1`)).json();
-  const first = (list.signs || list.results || list.items || list)[0];
+  const first = (list.hits)[0];
   const firstFrames = [], transfers = [];
   let samples = [], flavour = '';
   for (let run = 0; run < RUNS; run++) {

@@ -10,7 +10,7 @@ before(async () => {
   server = await startServer();
   browser = await launchBrowser();
   const list = await (await fetch(`${server.base}/api/signs?q=&limit=50`)).json();
-  const hits = list.signs || list.results || list.items || list;
+  const hits = list.hits;
   // A sign with a gloss of a few letters and keywords makes the search meaningful.
   sign = hits.find((s) => /^[A-Za-z]{3,}/.test(s.gloss) && (s.keywords || []).length) || hits[0];
   assert.ok(sign, 'the database created from data/ has signs');

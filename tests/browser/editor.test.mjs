@@ -3,7 +3,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 
-import { launchBrowser, openPage, screenshot, startServer } from './harness.mjs';
+import { TEST_TOKEN, launchBrowser, openPage, screenshot, startServer } from './harness.mjs';
 
 let server, browser;
 before(async () => { server = await startServer(); browser = await launchBrowser(); });
@@ -57,4 +57,40 @@ test('saving without a token is refused in the page with a clear message', async
   await page.fill('#editor-token', 'not-a-real-token');
   await page.click('#editor-save');
   await page.waitForFunction(() => /refused|Not saved/.test(document.getElementById('editor-save-status').textContent), null, { timeout: 10_000 });
+});
+
+test('a new sign is saved with a token, edited with If-Match, and a stale edit is refused', async () => {
+  const { page } = await openPage(browser, server.base, '#/editor');
+  await page.fill('#editor-text', GOOD);
+  await page.click('.save summary');
+  await page.fill('#editor-gloss', 'BROWSER-TEST-V');
+  await page.fill('#editor-keywords', 'browsertestword');
+  await page.fill('#editor-token', TEST_TOKEN);
+  await page.click('#editor-save');
+  await page.waitForFunction(() => /Saved as sign \d+/.test(document.getElementById('editor-save-status').textContent), null, { timeout: 10_000 });
+  const id = Number((await page.textContent('#editor-save-status')).match(/sign (\d+)/)[1]);
+  const stored = await (await fetch(`${server.base}/api/signs/${id}`)).json();
+  assert.equal(stored.gloss, 'BROWSER-TEST-V');
+  assert.equal(stored.notation, GOOD);
+
+  // An edit in the page is a PUT on the revision it started from.
+  const edited = GOOD.replace('F_0^1(0.5)', 'F_0^1(0.7)');
+  await page.fill('#editor-text', edited);
+  await page.click('#editor-save');
+  await page.waitForFunction((n) => document.getElementById('editor-save-status').textContent === `Saved as sign ${n}.`, id);
+  const after = await (await fetch(`${server.base}/api/signs/${id}`)).json();
+  assert.equal(after.notation, edited);
+  assert.equal(after.revision, stored.revision + 1);
+
+  // Someone else changes the sign; the page's next save must be refused, not lost.
+  const other = await fetch(`${server.base}/api/signs/${id}`, {
+    method: 'PUT',
+    headers: { 'Content-Type': 'application/json', Authorization: `Bearer ${TEST_TOKEN}`, 'If-Match': `"${after.revision}"` },
+    body: JSON.stringify({ gloss: 'BROWSER-TEST-V', notation: GOOD, format: 'formula' }),
+  });
+  assert.equal(other.status, 200);
+  await page.fill('#editor-text', edited.replace('F_0^1(0.7)', 'F_0^1(0.9)'));
+  await page.click('#editor-save');
+  await page.waitForFunction(() => /changed this sign/.test(document.getElementById('editor-save-status').textContent), null, { timeout: 10_000 });
+  assert.equal((await (await fetch(`${server.base}/api/signs/${id}`)).json()).notation, GOOD, 'the other edit is kept');
 });

@@ -43,6 +43,9 @@ export function missingPrerequisites() {
   return missing;
 }
 
+// The admin token the test server accepts for writes (SIGNWEAVE_ADMIN_TOKEN, server/main.cpp).
+export const TEST_TOKEN = 'browser-test-token-4f9c2a7e1b';
+
 export async function startServer({ extraArgs = [] } = {}) {
   const missing = missingPrerequisites();
   if (missing.length) throw new Error(`browser tests need: ${missing.join(', ')}`);
@@ -51,7 +54,9 @@ export async function startServer({ extraArgs = [] } = {}) {
   const port = await freePort();
   const args = ['--host', '127.0.0.1', '--port', String(port), '--db', db,
     '--web', path.join(ROOT, 'web'), '--data', path.join(ROOT, 'data'), ...extraArgs];
-  const child = spawn(SERVER_BIN, args, { cwd: ROOT, stdio: ['ignore', 'pipe', 'pipe'] });
+  const child = spawn(SERVER_BIN, args, {
+    cwd: ROOT, stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, SIGNWEAVE_ADMIN_TOKEN: TEST_TOKEN },
+  });
   let log = '';
   child.stdout.on('data', (d) => { log += d; });
   child.stderr.on('data', (d) => { log += d; });

@@ -11,7 +11,7 @@ before(async () => {
   server = await startServer();
   browser = await launchBrowser();
   const list = await (await fetch(`${server.base}/api/signs?q=&limit=100`)).json();
-  const hits = list.signs || list.results || list.items || list;
+  const hits = list.hits;
   // A one-word keyword of a sign whose language has an alphabet (so an unknown word can be spelled).
   for (const s of hits) {
     const word = (s.keywords || []).map((k) => (typeof k === 'string' ? k : k.word)).find((k) => /^[a-z]{3,}$/i.test(k));

@@ -60,7 +60,7 @@ export class ApiClient {
     const params = new URLSearchParams({ q, limit: String(limit) });
     if (lang) params.set('lang', lang);
     const { json } = await this.request(`/api/signs?${params}`, { signal });
-    return Array.isArray(json) ? json : (json.signs || json.results || json.items || []);
+    return Array.isArray(json) ? json : (json.hits || json.signs || []);
   }
 
   async sign(id) {

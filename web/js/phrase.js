@@ -14,7 +14,7 @@ export function planTokens(plan) {
       signId: t.sign_id ?? null,
       gloss: t.gloss ?? '',
       letters: (t.letters || []).map((l) => ({ letter: l.letter, signId: l.sign_id ?? null, gloss: l.gloss ?? '' })),
-      pause_s: t.pause_s ?? 0,
+      pause_s: t.duration_s ?? t.pause_s ?? 0,
     };
   });
 }
