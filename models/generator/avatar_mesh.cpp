@@ -1,0 +1,230 @@
+// Avatar mesh pipeline; see avatar_mesh.h.
+#include "avatar_mesh.h"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include <meshoptimizer.h>
+
+#include "surface_nets.h"
+
+namespace sw::avatar_generator {
+
+const char* material_name(Material material) {
+  switch (material) {
+    case Material::kSkin: return "skin";
+    case Material::kTop: return "top";
+    case Material::kTrousers: return "trousers";
+    case Material::kShoes: return "shoes";
+    case Material::kHair: return "hair";
+    case Material::kLips: return "lips";
+    case Material::kBrows: return "brows";
+    case Material::kMouthInner: return "mouthInner";
+    case Material::kEyeWhite: return "eyeWhite";
+    case Material::kIris: return "iris";
+    case Material::kTongue: return "tongue";
+    case Material::kCount: break;
+  }
+  return "unknown";
+}
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+// Eyeball: a sphere with its pole on +Z (the gaze), so the iris edge is one latitude ring.
+void add_eyeball(glm::vec3 centre, int joint, std::vector<MeshPiece>& pieces) {
+  constexpr int kSegments = 20;
+  // Polar angles of the rings from the gaze axis: fine near the cornea, coarse behind.
+  const float rings[] = {0.0f, 0.22f, 0.36f, 0.48f, 0.62f, 0.85f, 1.1f, 1.35f,
+                         1.6f, 1.9f,  2.25f, 2.65f, kPi};
+  const int ring_count = static_cast<int>(sizeof(rings) / sizeof(rings[0]));
+  const float iris_angle = 0.48f;  // 11.1 mm iris on a 12 mm-radius eyeball
+  MeshPiece white, iris;
+  white.material = Material::kEyeWhite;
+  iris.material = Material::kIris;
+  white.rigid_joint = iris.rigid_joint = joint;
+  for (MeshPiece* piece : {&white, &iris}) {
+    const bool is_iris = piece == &iris;
+    std::vector<std::vector<std::uint32_t>> ring_index;
+    for (int r = 0; r < ring_count; ++r) {
+      const float theta = rings[r];
+      if (is_iris ? theta > iris_angle + 1e-6f : theta < iris_angle - 1e-6f) continue;
+      std::vector<std::uint32_t> indices;
+      const int count = (theta == 0.0f || theta == kPi) ? 1 : kSegments;
+      for (int s = 0; s < count; ++s) {
+        const float phi = 2.0f * kPi * static_cast<float>(s) / kSegments;
+        const glm::vec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                          std::cos(theta));
+        indices.push_back(static_cast<std::uint32_t>(piece->positions.size()));
+        piece->positions.push_back(centre + n * kEyeballRadius);
+        piece->normals.push_back(n);
+        piece->nearest_primitive.push_back(-1);
+      }
+      ring_index.push_back(indices);
+    }
+    for (size_t r = 0; r + 1 < ring_index.size(); ++r) {
+      const auto& a = ring_index[r];
+      const auto& b = ring_index[r + 1];
+      for (int s = 0; s < kSegments; ++s) {
+        const int s1 = (s + 1) % kSegments;
+        auto A = [&](int i) { return a.size() == 1 ? a[0] : a[static_cast<size_t>(i)]; };
+        auto B = [&](int i) { return b.size() == 1 ? b[0] : b[static_cast<size_t>(i)]; };
+        // Outward-facing (counter-clockwise seen from outside).
+        if (a.size() != 1) piece->indices.insert(piece->indices.end(), {A(s), B(s), A(s1)});
+        if (b.size() != 1) piece->indices.insert(piece->indices.end(), {A(s1), B(s), B(s1)});
+      }
+    }
+    pieces.push_back(*piece);
+  }
+}
+
+// Tongue: a flattened ellipsoid resting on the floor of the mouth, carried by the jaw.
+void add_tongue(const HumanoidLayout& layout, std::vector<MeshPiece>& pieces) {
+  MeshPiece tongue;
+  tongue.material = Material::kTongue;
+  tongue.rigid_joint = layout.find("jaw");
+  const glm::vec3 centre(0.0f, kMouthY - 0.0045f, 0.070f);
+  const glm::vec3 radii(0.018f, 0.0040f, 0.026f);
+  constexpr int kRings = 8, kSegments = 14;
+  for (int r = 0; r <= kRings; ++r) {
+    const float theta = kPi * static_cast<float>(r) / kRings;
+    for (int s = 0; s < kSegments; ++s) {
+      const float phi = 2.0f * kPi * static_cast<float>(s) / kSegments;
+      const glm::vec3 unit(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                           std::cos(theta));
+      tongue.positions.push_back(centre + unit * radii);
+      tongue.normals.push_back(glm::normalize(unit / radii));
+      tongue.nearest_primitive.push_back(-1);
+    }
+  }
+  for (int r = 0; r < kRings; ++r)
+    for (int s = 0; s < kSegments; ++s) {
+      const auto i = [&](int rr, int ss) {
+        return static_cast<std::uint32_t>(rr * kSegments + (ss % kSegments));
+      };
+      tongue.indices.insert(tongue.indices.end(), {i(r, s), i(r + 1, s), i(r, s + 1)});
+      tongue.indices.insert(tongue.indices.end(), {i(r, s + 1), i(r + 1, s), i(r + 1, s + 1)});
+    }
+  pieces.push_back(tongue);
+}
+
+// Vertex-cache order for the triangles, then vertices in first-use order (meshoptimizer's
+// recommended sequence: optimizeVertexCache, then optimizeVertexFetch).
+void optimise_for_gpu(MeshPiece& piece) {
+  const size_t vertex_count = piece.positions.size();
+  meshopt_optimizeVertexCache(piece.indices.data(), piece.indices.data(), piece.indices.size(),
+                              vertex_count);
+  std::vector<unsigned int> remap(vertex_count);
+  const size_t unique = meshopt_optimizeVertexFetchRemap(remap.data(), piece.indices.data(),
+                                                         piece.indices.size(), vertex_count);
+  meshopt_remapIndexBuffer(piece.indices.data(), piece.indices.data(), piece.indices.size(),
+                           remap.data());
+  std::vector<glm::vec3> positions(unique), normals(unique);
+  std::vector<int> nearest(unique);
+  for (size_t v = 0; v < vertex_count; ++v) {
+    if (remap[v] == ~0u) continue;  // unused vertex
+    positions[remap[v]] = piece.positions[v];
+    normals[remap[v]] = piece.normals[v];
+    nearest[remap[v]] = piece.nearest_primitive[v];
+  }
+  piece.positions.swap(positions);
+  piece.normals.swap(normals);
+  piece.nearest_primitive.swap(nearest);
+}
+
+}  // namespace
+
+std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const HumanoidLayout& layout,
+                                         const AvatarMeshSettings& settings,
+                                         AvatarMeshStats* stats) {
+  std::vector<MeshPiece> pieces;
+  add_eyeball(layout.position("leftEye"), layout.find("leftEye"), pieces);
+  add_eyeball(layout.position("rightEye"), layout.find("rightEye"), pieces);
+  add_tongue(layout, pieces);
+  std::size_t fixed_triangles = 0;
+  for (const MeshPiece& piece : pieces) fixed_triangles += piece.indices.size() / 3;
+
+  const RawMesh raw = polygonise_surface_nets(body, settings.cell_m);
+  if (stats) stats->raw_triangles = raw.indices.size() / 3;
+
+  // Material per vertex, then per triangle (majority of its corners).
+  std::vector<int> vertex_surface(raw.positions.size());
+  for (size_t v = 0; v < raw.positions.size(); ++v)
+    vertex_surface[v] = static_cast<int>(body.surface_at(raw.positions[v], raw.nearest_primitive[v]));
+  const size_t triangle_count = raw.indices.size() / 3;
+  std::vector<int> triangle_surface(triangle_count);
+  for (size_t t = 0; t < triangle_count; ++t) {
+    const int a = vertex_surface[raw.indices[3 * t]], b = vertex_surface[raw.indices[3 * t + 1]],
+              c = vertex_surface[raw.indices[3 * t + 2]];
+    triangle_surface[t] = (b == c) ? b : a;
+  }
+
+  // Duplicate every vertex once per material that uses it: the material boundaries become
+  // seams (same position, different vertex), which meshopt_simplify preserves.
+  std::vector<glm::vec3> positions;
+  std::vector<int> nearest, surface;
+  std::vector<std::uint32_t> indices(raw.indices.size());
+  std::map<std::pair<std::uint32_t, int>, std::uint32_t> split;
+  for (size_t t = 0; t < triangle_count; ++t)
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = raw.indices[3 * t + static_cast<size_t>(c)];
+      const auto key = std::make_pair(v, triangle_surface[t]);
+      auto found = split.find(key);
+      if (found == split.end()) {
+        found = split.emplace(key, static_cast<std::uint32_t>(positions.size())).first;
+        positions.push_back(raw.positions[v]);
+        nearest.push_back(raw.nearest_primitive[v]);
+        surface.push_back(triangle_surface[t]);
+      }
+      indices[3 * t + static_cast<size_t>(c)] = found->second;
+    }
+
+  if (fixed_triangles >= settings.triangle_budget)
+    throw std::runtime_error("triangle budget smaller than the eyes and tongue alone");
+  const size_t target_indices = (settings.triangle_budget - fixed_triangles) * 3;
+  std::vector<std::uint32_t> simplified(indices.size());
+  float error = 0.0f;
+  // Error is relative to the mesh extent; 1.0 lets the triangle budget be the only limit.
+  const size_t kept = meshopt_simplify(simplified.data(), indices.data(), indices.size(),
+                                       &positions[0].x, positions.size(), sizeof(glm::vec3),
+                                       target_indices, 1.0f, 0, &error);
+  simplified.resize(kept);
+  if (stats) stats->body_triangles = kept / 3;
+
+  // One piece per body material, each with its own compact vertex range.
+  const std::vector<int> active = [&] {
+    std::vector<int> all(body.primitives().size());
+    for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    return all;
+  }();
+  for (int m = 0; m < static_cast<int>(Surface::kCount); ++m) {
+    MeshPiece piece;
+    piece.material = static_cast<Material>(m);
+    std::map<std::uint32_t, std::uint32_t> remap;
+    for (size_t t = 0; t + 2 < simplified.size(); t += 3) {
+      if (surface[simplified[t]] != m) continue;
+      for (int c = 0; c < 3; ++c) {
+        const std::uint32_t v = simplified[t + static_cast<size_t>(c)];
+        auto found = remap.find(v);
+        if (found == remap.end()) {
+          found = remap.emplace(v, static_cast<std::uint32_t>(piece.positions.size())).first;
+          piece.positions.push_back(positions[v]);
+          piece.nearest_primitive.push_back(nearest[v]);
+        }
+        piece.indices.push_back(found->second);
+      }
+    }
+    if (piece.indices.empty()) continue;
+    // Normals from the field gradient: smooth, and identical on both sides of a seam.
+    piece.normals.resize(piece.positions.size());
+    for (size_t v = 0; v < piece.positions.size(); ++v)
+      piece.normals[v] = body.gradient(piece.positions[v], active, 0.0004f);
+    pieces.push_back(std::move(piece));
+  }
+  for (MeshPiece& piece : pieces) optimise_for_gpu(piece);
+  return pieces;
+}
+
+}  // namespace sw::avatar_generator
