@@ -285,6 +285,8 @@ tinygltf::Model make_humanoid_model(const HumanoidOptions& options) {
     clothes.tube({0.0f, spine_y[k], 0.0f}, {0.0f, spine_y[k + 1], 0.0f}, HumanoidGeometry::kTorsoRadiusX,
                  HumanoidGeometry::kTorsoRadiusZ, {1, 0, 0}, J(spine[k]), k < 3 && has(spine[k + 1]) ? J(spine[k + 1]) : -1);
   }
+  // The shoulder yoke closes the torso's top.
+  if (has("upperChest")) clothes.ellipsoid({0.0f, 1.46f, 0.0f}, {HumanoidGeometry::kTorsoRadiusX, 0.03f, HumanoidGeometry::kTorsoRadiusZ}, J("upperChest"));
   for (const std::string side : {"left", "right"}) {
     if (has(side + "UpperArm") && has(side + "LowerArm"))
       clothes.tube(P(side + "UpperArm"), P(side + "LowerArm"), 0.045f, 0.045f, {0, 1, 0}, J(side + "UpperArm"), J(side + "LowerArm"));

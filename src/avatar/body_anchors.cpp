@@ -1,0 +1,569 @@
+// Body anchors from skeleton + mesh. See body_anchors.h for the names and the method.
+#include "avatar/body_anchors.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include "skeleton/humanoid_names.h"
+
+namespace sw::avatar {
+namespace {
+
+using skeleton::Finger;
+using skeleton::FingerSegment;
+
+constexpr std::array<const char*, 23> kLevels = {
+    "above_head", "head_top", "head", "forehead", "eyebrows", "eyes", "nose", "ears",
+    "cheeks", "mouth", "lips", "teeth", "tongue", "chin", "under_chin", "neck",
+    "shoulders", "shoulder_top", "chest", "stomach", "belly", "waist", "below_waist"};
+constexpr std::array<const char*, 5> kSides = {"right_beside", "right", "centre", "left", "left_beside"};
+constexpr std::array<const char*, 6> kHandPlaces = {"palm", "back", "thumb_side", "little_side", "wrist", "wrist_back"};
+constexpr std::array<const char*, 6> kFingerPlaces = {"tip", "pad", "nail", "base", "middle_joint", "side"};
+constexpr std::array<const char*, 5> kFingerNames = {"thumb", "index", "middle", "ring", "little"};
+constexpr std::array<const char*, 4> kArmPlaces = {"forearm", "forearm_back", "elbow", "upper_arm"};
+
+// Which body part a triangle belongs to, so a ray from inside the head cannot stop on a hand.
+enum Region : unsigned { kCore = 1, kLeftArm = 2, kRightArm = 4, kLeftHand = 8, kRightHand = 16, kLegs = 32 };
+
+struct Hit {
+  glm::vec3 point{0.0f};
+  glm::vec3 normal{0.0f};  // geometric, turned to face along the ray (outward from inside)
+  float distance = 0.0f;
+};
+
+glm::vec3 perpendicular(glm::vec3 v, glm::vec3 axis) {
+  const glm::vec3 p = v - axis * glm::dot(v, axis);
+  const float len = glm::length(p);
+  return len > 1e-6f ? p / len : v;
+}
+
+class Surface {
+ public:
+  Surface(const Avatar& avatar, const std::vector<unsigned>& joint_region) : mesh_(avatar.mesh) {
+    const std::size_t triangles = mesh_.indices.size() / 3;
+    region_.resize(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) {
+      // The triangle's part: the dominant joint of its first vertex (parts meet at seams, where
+      // either answer is right).
+      const std::uint32_t v = mesh_.indices[3 * t];
+      const glm::vec4 w = mesh_.weights[v];
+      int best = 0;
+      for (int k = 1; k < 4; ++k) if (w[k] > w[best]) best = k;
+      const std::size_t joint = mesh_.joints[v][static_cast<std::size_t>(best)];
+      region_[t] = joint < joint_region.size() ? joint_region[joint] : kCore;
+    }
+  }
+
+  // Nearest surface along the ray (Möller–Trumbore, both faces) among triangles of `regions`.
+  std::optional<Hit> cast(glm::vec3 origin, glm::vec3 dir, unsigned regions) const {
+    float best = 1e30f;
+    std::size_t best_t = 0;
+    bool found = false;
+    const std::size_t triangles = region_.size();
+    for (std::size_t t = 0; t < triangles; ++t) {
+      if (!(region_[t] & regions)) continue;
+      const glm::vec3& a = mesh_.positions[mesh_.indices[3 * t]];
+      const glm::vec3& b = mesh_.positions[mesh_.indices[3 * t + 1]];
+      const glm::vec3& c = mesh_.positions[mesh_.indices[3 * t + 2]];
+      const glm::vec3 e1 = b - a, e2 = c - a;
+      const glm::vec3 p = glm::cross(dir, e2);
+      const float det = glm::dot(e1, p);
+      if (std::abs(det) < 1e-12f) continue;
+      const float inv = 1.0f / det;
+      const glm::vec3 s = origin - a;
+      const float u = glm::dot(s, p) * inv;
+      if (u < 0.0f || u > 1.0f) continue;
+      const glm::vec3 q = glm::cross(s, e1);
+      const float v = glm::dot(dir, q) * inv;
+      if (v < 0.0f || u + v > 1.0f) continue;
+      const float dist = glm::dot(e2, q) * inv;
+      if (dist > 1e-5f && dist < best) { best = dist; best_t = t; found = true; }
+    }
+    if (!found) return std::nullopt;
+    const glm::vec3& a = mesh_.positions[mesh_.indices[3 * best_t]];
+    const glm::vec3& b = mesh_.positions[mesh_.indices[3 * best_t + 1]];
+    const glm::vec3& c = mesh_.positions[mesh_.indices[3 * best_t + 2]];
+    glm::vec3 n = glm::cross(b - a, c - a);
+    const float len = glm::length(n);
+    n = len > 0.0f ? n / len : dir;
+    if (glm::dot(n, dir) < 0.0f) n = -n;
+    return Hit{origin + dir * best, n, best};
+  }
+
+ private:
+  const SkinnedMesh& mesh_;
+  std::vector<unsigned> region_;
+};
+
+class AnchorBuilder {
+ public:
+  AnchorBuilder(const Avatar& avatar, std::vector<std::string>* warnings)
+      : avatar_(avatar), warnings_(warnings), surface_(avatar, joint_regions(avatar)) {}
+
+  std::vector<Anchor> build() {
+    frame();
+    face_heights();
+    body_levels();
+    neutral_space();
+    for (int side = 0; side < 2; ++side) hand(side == 0);
+    for (int side = 0; side < 2; ++side) arm(side == 0);
+    return std::move(anchors_);
+  }
+
+ private:
+  const Avatar& avatar_;
+  std::vector<std::string>* warnings_;
+  Surface surface_;
+  std::vector<Anchor> anchors_;
+  // Body frame (bind pose): up, the signer's left, forward (facing).
+  glm::vec3 up_{0, 1, 0}, left_{1, 0, 0}, forward_{0, 0, 1};
+  glm::vec3 hips_{0.0f};
+  // Heights along up_, measured from the hips joint.
+  float top_h_ = 0, chin_h_ = 0, eyes_h_ = 0, nose_h_ = 0, head_h_ = 0, neck_h_ = 0;
+  float shoulder_h_ = 0, leg_h_ = 0;
+
+  static std::vector<unsigned> joint_regions(const Avatar& a) {
+    std::vector<unsigned> region(a.skeleton.joints.size(), kCore);
+    std::vector<unsigned> marker(a.skeleton.joints.size(), 0);
+    auto mark = [&](int id, unsigned r) {
+      const int j = a.canonical_to_joint.size() > static_cast<std::size_t>(id) ? a.canonical_to_joint[static_cast<std::size_t>(id)] : -1;
+      if (j >= 0) marker[static_cast<std::size_t>(j)] = r;
+    };
+    mark(skeleton::kLeftUpperArm, kLeftArm);
+    mark(skeleton::kRightUpperArm, kRightArm);
+    mark(skeleton::kLeftHand, kLeftHand);
+    mark(skeleton::kRightHand, kRightHand);
+    mark(skeleton::kLeftUpperLeg, kLegs);
+    mark(skeleton::kRightUpperLeg, kLegs);
+    for (std::size_t j = 0; j < region.size(); ++j) {  // parents first: inherit, markers override
+      const int p = a.skeleton.joints[j].parent;
+      region[j] = marker[j] ? marker[j] : (p >= 0 ? region[static_cast<std::size_t>(p)] : kCore);
+    }
+    return region;
+  }
+
+  int joint(int canonical) const { return avatar_.canonical_to_joint[static_cast<std::size_t>(canonical)]; }
+  // First present joint of a preference list (optional joints fall back to required ones).
+  int joint_of(std::initializer_list<int> preference) const {
+    for (int id : preference) if (joint(id) >= 0) return joint(id);
+    return joint(skeleton::kHips);
+  }
+  glm::vec3 bind_position(int j) const { return glm::vec3(glm::inverse(avatar_.inverse_bind[static_cast<std::size_t>(j)])[3]); }
+  glm::vec3 position(int canonical) const { return bind_position(joint(canonical)); }
+  bool has(int canonical) const { return joint(canonical) >= 0; }
+  float height(glm::vec3 p) const { return glm::dot(p - hips_, up_); }
+
+  void warn(const std::string& what) {
+    if (warnings_) warnings_->push_back(what);
+  }
+
+  void add(const std::string& name, int j, glm::vec3 point, glm::vec3 normal) {
+    const glm::mat4& ibm = avatar_.inverse_bind[static_cast<std::size_t>(j)];
+    Anchor a;
+    a.name = name;
+    a.joint = j;
+    a.offset = glm::vec3(ibm * glm::vec4(point, 1.0f));
+    const glm::vec3 n = glm::vec3(ibm * glm::vec4(normal, 0.0f));
+    const float len = glm::length(n);
+    a.normal = len > 0.0f ? n / len : normal;
+    anchors_.push_back(a);
+  }
+
+  // A surface point along dir from inside, or (with a warning) the origin pushed out by fallback_m.
+  Hit surface(const std::string& name, glm::vec3 origin, glm::vec3 dir, unsigned regions, float fallback_m) {
+    if (auto hit = surface_.cast(origin, dir, regions)) return *hit;
+    warn(name + ": no surface found, placed " + std::to_string(fallback_m) + " m from inside");
+    return Hit{origin + dir * fallback_m, dir, fallback_m};
+  }
+
+  void frame() {
+    hips_ = position(skeleton::kHips);
+    const glm::vec3 head = position(skeleton::kHead);
+    up_ = glm::normalize(head - hips_);
+    left_ = perpendicular(position(skeleton::kLeftUpperArm) - position(skeleton::kRightUpperArm), up_);
+    forward_ = glm::normalize(glm::cross(left_, up_));
+    head_h_ = height(head);
+    neck_h_ = height(position(skeleton::kNeck));
+    shoulder_h_ = 0.5f * (height(position(skeleton::kLeftUpperArm)) + height(position(skeleton::kRightUpperArm)));
+    leg_h_ = has(skeleton::kLeftUpperLeg) && has(skeleton::kRightUpperLeg)
+                 ? 0.5f * (height(position(skeleton::kLeftUpperLeg)) + height(position(skeleton::kRightUpperLeg)))
+                 : std::min(0.0f, shoulder_h_ - 0.5f * (head_h_ + 0.1f));
+  }
+
+  // The body's midline at height h: through hips, neck and head joints, vertical beyond them.
+  glm::vec3 axis(float h) const {
+    const glm::vec3 neck = position(skeleton::kNeck), head = position(skeleton::kHead);
+    const float hn = neck_h_, hh = head_h_;
+    glm::vec3 base;
+    if (h <= 0.0f) base = hips_;
+    else if (h <= hn) base = glm::mix(hips_, neck, hn > 0.0f ? h / hn : 0.0f);
+    else if (h <= hh) base = glm::mix(neck, head, hh > hn ? (h - hn) / (hh - hn) : 0.0f);
+    else base = head;
+    return base + up_ * (h - height(base));
+  }
+
+  void face_heights() {
+    const glm::vec3 head = position(skeleton::kHead);
+    const Hit top = surface("body/head_top/centre", head + up_ * 0.01f, up_, kCore, 0.2f);
+    top_h_ = height(top.point);
+    // The face profile: forward depth every 2 mm from the top of the head down to the neck joint.
+    struct Sample { float h, depth; };
+    std::vector<Sample> profile;
+    for (float h = top_h_ - 0.005f; h >= neck_h_; h -= 0.002f) {
+      const auto hit = surface_.cast(axis(h), forward_, kCore);
+      profile.push_back({h, hit ? hit->distance : 0.0f});
+    }
+    const float span = top_h_ - neck_h_;
+    float face_depth = 0.0f;
+    nose_h_ = neck_h_ + 0.6f * span;
+    for (const Sample& s : profile) {
+      if (s.h < neck_h_ + 0.35f * span || s.h > top_h_ - 0.15f * span) continue;
+      if (s.depth > face_depth) { face_depth = s.depth; nose_h_ = s.h; }
+    }
+    const float neck_depth = profile.empty() ? 0.0f : profile.back().depth;
+    const float threshold = neck_depth + 0.35f * (face_depth - neck_depth);
+    chin_h_ = neck_h_ + 0.35f * span;
+    bool found_chin = false;
+    for (const Sample& s : profile) {
+      if (s.h < nose_h_ && s.depth < threshold) { chin_h_ = s.h; found_chin = true; break; }
+    }
+    if (!found_chin) warn("chin: the face profile has no drop to the neck; estimated from head proportions");
+    const float head_height = top_h_ - chin_h_;
+    eyes_h_ = top_h_ - 0.48f * head_height;
+    if (has(skeleton::kLeftEye) && has(skeleton::kRightEye)) {
+      const float h = 0.5f * (height(position(skeleton::kLeftEye)) + height(position(skeleton::kRightEye)));
+      if (h > chin_h_ && h < top_h_) eyes_h_ = h;
+    }
+    // A nose peak outside the plausible band (no nose modelled) falls back to proportions.
+    if (nose_h_ > eyes_h_ - 0.1f * head_height || nose_h_ < eyes_h_ - 0.4f * head_height)
+      nose_h_ = eyes_h_ - 0.2f * head_height;
+  }
+
+  float half_width(float h, float sign, unsigned regions, float fallback_m) {
+    const auto hit = surface_.cast(axis(h), left_ * sign, regions);
+    return hit ? hit->distance : fallback_m;
+  }
+
+  // The five sides of one level: front-surface points across, or lateral/oblique rays for the
+  // levels whose sides are on the side of the head (ears, cheeks).
+  void level(const std::string& name, float h, int j, int j_left, int j_right, float inset_m = 0.0f) {
+    const glm::vec3 o = axis(h);
+    const float wl = half_width(h, 1.0f, kCore, 0.08f);
+    const float wr = half_width(h, -1.0f, kCore, 0.08f);
+    const Hit centre = surface("body/" + name + "/centre", o, forward_, kCore, 0.08f);
+    const std::string base = "body/" + name + "/";
+    Hit left, right;
+    if (name == "ears") {
+      left = surface(base + "left", o, left_, kCore, wl);
+      right = surface(base + "right", o, -left_, kCore, wr);
+    } else if (name == "cheeks") {
+      left = surface(base + "left", o, glm::normalize(forward_ * 0.8f + left_ * 0.6f), kCore, wl);
+      right = surface(base + "right", o, glm::normalize(forward_ * 0.8f - left_ * 0.6f), kCore, wr);
+    } else {
+      left = surface(base + "left", o + left_ * (0.5f * wl), forward_, kCore, centre.distance);
+      right = surface(base + "right", o - left_ * (0.5f * wr), forward_, kCore, centre.distance);
+    }
+    // Teeth and tongue sit behind the lips: the lip points moved inward along the normal.
+    const auto inside = [&](Hit hit) { hit.point -= forward_ * inset_m; return hit; };
+    add(base + "right_beside", j_right, o - left_ * (1.6f * wr) + forward_ * (0.5f * centre.distance), forward_);
+    add(base + "right", j_right, inside(right).point, right.normal);
+    add(base + "centre", j, inside(centre).point, centre.normal);
+    add(base + "left", j_left, inside(left).point, left.normal);
+    add(base + "left_beside", j_left, o + left_ * (1.6f * wl) + forward_ * (0.5f * centre.distance), forward_);
+  }
+
+  void body_levels() {
+    const int head = joint(skeleton::kHead);
+    const int neck = joint(skeleton::kNeck);
+    const int chest = joint_of({skeleton::kUpperChest, skeleton::kChest, skeleton::kSpine});
+    const int mid = joint_of({skeleton::kChest, skeleton::kSpine});
+    const int spine = joint(skeleton::kSpine);
+    const int hips = joint(skeleton::kHips);
+    const int lshoulder = joint_of({skeleton::kLeftShoulder, skeleton::kUpperChest, skeleton::kChest, skeleton::kSpine});
+    const int rshoulder = joint_of({skeleton::kRightShoulder, skeleton::kUpperChest, skeleton::kChest, skeleton::kSpine});
+    const float head_height = top_h_ - chin_h_;
+    const float eye_w = half_width(eyes_h_, 1.0f, kCore, 0.08f);
+
+    // above_head: off the body, a hand's breadth over the top, sides across the head's width.
+    {
+      const glm::vec3 o = axis(top_h_) + up_ * (0.45f * head_height);
+      for (int s = 0; s < 5; ++s) {
+        const float k = static_cast<float>(s - 2) * 0.75f * eye_w;  // right_beside .. left_beside
+        add(std::string("body/above_head/") + kSides[static_cast<std::size_t>(s)], head, o + left_ * k, up_);
+      }
+    }
+    // head_top: rays down onto the crown from above, across the head's width.
+    {
+      for (int s = 0; s < 5; ++s) {
+        const float k = static_cast<float>(s - 2) * 0.5f * eye_w;
+        const std::string name = std::string("body/head_top/") + kSides[static_cast<std::size_t>(s)];
+        const glm::vec3 above = axis(top_h_) + up_ * 0.05f + left_ * (s == 0 || s == 4 ? 2.4f * k : k);
+        if (s == 0 || s == 4) {
+          add(name, head, above - up_ * 0.05f, up_);  // beside the top: off the body
+        } else {
+          const Hit hit = surface(name, above, -up_, kCore, 0.05f);
+          add(name, head, hit.point, -hit.normal);  // the ray came from outside: flip
+        }
+      }
+    }
+    level("head", top_h_ - 0.15f * head_height, head, head, head);
+    level("forehead", eyes_h_ + 0.2f * head_height, head, head, head);
+    level("eyebrows", eyes_h_ + 0.1f * head_height, head, head, head);
+    level("eyes", eyes_h_, head, head, head);
+    level("nose", nose_h_, head, head, head);
+    level("ears", 0.5f * (eyes_h_ + nose_h_), head, head, head);
+    level("cheeks", 0.4f * eyes_h_ + 0.6f * nose_h_, head, head, head);
+    const float mouth_h = chin_h_ + 0.6f * (nose_h_ - chin_h_);
+    level("mouth", mouth_h, head, head, head);
+    level("lips", mouth_h, head, head, head);
+    level("teeth", mouth_h, head, head, head, 0.012f);
+    level("tongue", mouth_h, head, head, head, 0.02f);
+    level("chin", chin_h_ + 0.08f * head_height, head, head, head);
+    const float neck_level = neck_h_ + 0.35f * (chin_h_ - neck_h_);
+    under_chin(neck_level, head);
+    level("neck", neck_level, neck, neck, neck);
+    level("shoulders", shoulder_h_, chest, lshoulder, rshoulder);
+    shoulder_top(chest, lshoulder, rshoulder);
+    const float torso = shoulder_h_ - leg_h_;
+    level("chest", leg_h_ + 0.70f * torso, chest, chest, chest);
+    level("stomach", leg_h_ + 0.55f * torso, mid, mid, mid);
+    level("belly", leg_h_ + 0.42f * torso, spine, spine, spine);
+    level("waist", leg_h_ + 0.32f * torso, spine, spine, spine);
+    level("below_waist", leg_h_ + 0.14f * torso, hips, hips, hips);
+  }
+
+  // Under the chin: rays up from just in front of the neck onto the jaw's underside.
+  void under_chin(float neck_level, int head) {
+    const glm::vec3 o = axis(neck_level);
+    const Hit neck_front = surface("body/neck/centre", o, forward_, kCore, 0.05f);
+    const float w = half_width(neck_level, 1.0f, kCore, 0.05f);
+    for (int s = 0; s < 5; ++s) {
+      const std::string name = std::string("body/under_chin/") + kSides[static_cast<std::size_t>(s)];
+      const float k = static_cast<float>(s - 2) * 0.5f * w;
+      const glm::vec3 start = o + forward_ * (neck_front.distance + 0.012f) + left_ * k;
+      const glm::vec3 chin = axis(chin_h_) + forward_ * (neck_front.distance + 0.012f) + left_ * k;
+      if (s == 0 || s == 4) {
+        add(name, head, start + left_ * (2.0f * k), -up_);
+        continue;
+      }
+      auto hit = surface_.cast(start, up_, kCore);
+      if (!hit || height(hit->point) > chin_h_ + 0.04f) {
+        warn(name + ": no jaw underside found, placed below the chin");
+        add(name, head, chin - up_ * 0.01f, -up_);
+      } else {
+        add(name, head, hit->point, -hit->normal);
+      }
+    }
+  }
+
+  // Tops of the shoulders: rays down from above the shoulder line; centre at the neck's base.
+  void shoulder_top(int chest, int lshoulder, int rshoulder) {
+    // Horizontal distance from the midline to the shoulder joints.
+    const auto horizontal = [&](glm::vec3 v) { return glm::length(v - up_ * glm::dot(v, up_)); };
+    const glm::vec3 centre = axis(shoulder_h_);
+    const float reach = 0.5f * (horizontal(position(skeleton::kLeftUpperArm) - centre) +
+                                horizontal(position(skeleton::kRightUpperArm) - centre));
+    for (int s = 0; s < 5; ++s) {
+      const std::string name = std::string("body/shoulder_top/") + kSides[static_cast<std::size_t>(s)];
+      const float sign = s < 2 ? -1.0f : 1.0f;
+      const int j = s < 2 ? rshoulder : s > 2 ? lshoulder : chest;
+      if (s == 2) {
+        const Hit hit = surface(name, axis(neck_h_), forward_, kCore, 0.05f);
+        add(name, chest, hit.point, hit.normal);
+      } else if (s == 0 || s == 4) {
+        add(name, j, axis(shoulder_h_) + left_ * (sign * 1.3f * reach) + up_ * 0.05f, up_);
+      } else {
+        const glm::vec3 above = axis(shoulder_h_) + left_ * (sign * 0.6f * reach) + up_ * 0.3f;
+        // Only a hit near the shoulder line is the shoulder's top (not the floor of an open mesh).
+        const auto hit = surface_.cast(above, -up_, kCore | kLeftArm | kRightArm);
+        if (hit && std::abs(height(hit->point) - shoulder_h_) < 0.12f) {
+          add(name, j, hit->point, -hit->normal);
+        } else {
+          warn(name + ": no shoulder top found, placed at the shoulder line");
+          add(name, j, above - up_ * 0.3f, up_);
+        }
+      }
+    }
+  }
+
+  void neutral_space() {
+    const float torso = shoulder_h_ - leg_h_;
+    const float h = leg_h_ + 0.62f * torso;  // between chest and stomach
+    const glm::vec3 o = axis(h);
+    const Hit front = surface("space/centre", o, forward_, kCore, 0.12f);
+    const float arm = 0.5f * (glm::length(position(skeleton::kLeftHand) - position(skeleton::kLeftUpperArm)) +
+                              glm::length(position(skeleton::kRightHand) - position(skeleton::kRightUpperArm)));
+    const float shoulder_half = 0.5f * glm::length(position(skeleton::kLeftUpperArm) - position(skeleton::kRightUpperArm));
+    const int j = joint_of({skeleton::kChest, skeleton::kSpine});
+    const float across[5] = {-1.1f, -0.5f, 0.0f, 0.5f, 1.1f};
+    for (int s = 0; s < 5; ++s) {
+      const glm::vec3 p = o + forward_ * (front.distance + 0.45f * arm) + left_ * (across[s] * shoulder_half);
+      add(std::string("space/") + kSides[static_cast<std::size_t>(s)], j, p, forward_);
+    }
+  }
+
+  void hand(bool left) {
+    const std::string side = left ? "left" : "right";
+    const unsigned region = left ? kLeftHand : kRightHand;
+    const unsigned arm_region = left ? kLeftArm : kRightArm;
+    const int hand_id = left ? skeleton::kLeftHand : skeleton::kRightHand;
+    const glm::vec3 wrist = position(hand_id);
+    const glm::vec3 middle = position(skeleton::finger_joint_id(left, Finger::Middle, FingerSegment::Proximal));
+    const glm::vec3 index = position(skeleton::finger_joint_id(left, Finger::Index, FingerSegment::Proximal));
+    const glm::vec3 little = position(skeleton::finger_joint_id(left, Finger::Little, FingerSegment::Proximal));
+    const glm::vec3 along = glm::normalize(middle - wrist);
+    const glm::vec3 thumbward = perpendicular(index - little, along);
+    // Palm normal: along × thumbward is palmar for a left hand, dorsal for a right one.
+    const glm::vec3 palmar = glm::normalize(glm::cross(along, thumbward)) * (left ? 1.0f : -1.0f);
+    const int hand_joint = joint(hand_id);
+    const glm::vec3 centre = glm::mix(wrist, middle, 0.5f);
+    const std::string base = "hand/" + side + "/";
+    const float palm_fallback = 0.015f;
+    const glm::vec3 dirs[4] = {palmar, -palmar, thumbward, -thumbward};
+    for (int k = 0; k < 4; ++k) {
+      const Hit hit = surface(base + kHandPlaces[static_cast<std::size_t>(k)], centre, dirs[k], region, k < 2 ? palm_fallback : 0.04f);
+      add(base + kHandPlaces[static_cast<std::size_t>(k)], hand_joint, hit.point, hit.normal);
+    }
+    const Hit wrist_front = surface(base + "wrist", wrist, palmar, region | arm_region, palm_fallback);
+    add(base + "wrist", hand_joint, wrist_front.point, wrist_front.normal);
+    const Hit wrist_back = surface(base + "wrist_back", wrist, -palmar, region | arm_region, palm_fallback);
+    add(base + "wrist_back", hand_joint, wrist_back.point, wrist_back.normal);
+
+    for (int f = 0; f < 5; ++f) {
+      const Finger finger = static_cast<Finger>(f);
+      const bool thumb = finger == Finger::Thumb;
+      // The finger's knuckles: base (MCP), middle joint (PIP; the thumb's IP), distal, tip.
+      const int base_id = skeleton::finger_joint_id(left, finger, FingerSegment::Proximal);
+      const int middle_id = skeleton::finger_joint_id(left, finger, thumb ? FingerSegment::Distal : FingerSegment::Intermediate);
+      const int distal_id = skeleton::finger_joint_id(left, finger, FingerSegment::Distal);
+      const int tip_id = skeleton::finger_joint_id(left, finger, FingerSegment::Tip);
+      const glm::vec3 base_p = position(base_id), middle_p = position(middle_id), distal_p = position(distal_id);
+      const glm::vec3 tip_p = has(tip_id) ? position(tip_id) : distal_p + (distal_p - middle_p) * 0.8f;
+      const glm::vec3 dir = glm::normalize(tip_p - distal_p);
+      // Palmar side of this finger; the thumb's pad faces the fingers (across the palm).
+      const glm::vec3 pad_dir = perpendicular(thumb ? palmar - thumbward : palmar, dir);
+      const glm::vec3 side_dir = perpendicular(thumbward, dir);
+      const std::string fname = kFingerNames[static_cast<std::size_t>(f)];
+      const glm::vec3 last_mid = glm::mix(distal_p, tip_p, 0.5f);
+      const int distal_j = joint(distal_id);
+      const Hit tip = surface(base + "tip/" + fname, last_mid, dir, region, 0.5f * glm::length(tip_p - distal_p));
+      add(base + "tip/" + fname, distal_j, tip.point, tip.normal);
+      const Hit pad = surface(base + "pad/" + fname, last_mid, pad_dir, region, 0.008f);
+      add(base + "pad/" + fname, distal_j, pad.point, pad.normal);
+      const Hit nail = surface(base + "nail/" + fname, last_mid, -pad_dir, region, 0.008f);
+      add(base + "nail/" + fname, distal_j, nail.point, nail.normal);
+      const glm::vec3 base_o = glm::mix(base_p, middle_p, 0.2f);
+      const Hit fbase = surface(base + "base/" + fname, base_o, perpendicular(pad_dir, glm::normalize(middle_p - base_p)), region, 0.01f);
+      add(base + "base/" + fname, joint(base_id), fbase.point, fbase.normal);
+      const Hit knuckle = surface(base + "middle_joint/" + fname, middle_p, -pad_dir, region, 0.01f);
+      add(base + "middle_joint/" + fname, joint(middle_id), knuckle.point, knuckle.normal);
+      const Hit fside = surface(base + "side/" + fname, glm::mix(base_p, middle_p, 0.5f), side_dir, region, 0.01f);
+      add(base + "side/" + fname, joint(base_id), fside.point, fside.normal);
+    }
+  }
+
+  void arm(bool left) {
+    const std::string base = std::string("arm/") + (left ? "left" : "right") + "/";
+    const unsigned region = left ? kLeftArm : kRightArm;
+    const int upper_id = left ? skeleton::kLeftUpperArm : skeleton::kRightUpperArm;
+    const int lower_id = left ? skeleton::kLeftLowerArm : skeleton::kRightLowerArm;
+    const int hand_id = left ? skeleton::kLeftHand : skeleton::kRightHand;
+    const glm::vec3 shoulder = position(upper_id), elbow = position(lower_id), wrist = position(hand_id);
+    const glm::vec3 fore_axis = glm::normalize(wrist - elbow);
+    const glm::vec3 upper_axis = glm::normalize(elbow - shoulder);
+    // The palm's side of the forearm, as the hand's palm normal (rest pose).
+    const glm::vec3 middle = position(skeleton::finger_joint_id(left, Finger::Middle, FingerSegment::Proximal));
+    const glm::vec3 index = position(skeleton::finger_joint_id(left, Finger::Index, FingerSegment::Proximal));
+    const glm::vec3 little = position(skeleton::finger_joint_id(left, Finger::Little, FingerSegment::Proximal));
+    const glm::vec3 along = glm::normalize(middle - wrist);
+    const glm::vec3 palmar = perpendicular(glm::cross(along, perpendicular(index - little, along)) * (left ? 1.0f : -1.0f), fore_axis);
+    const glm::vec3 mid_fore = glm::mix(elbow, wrist, 0.5f);
+    const Hit fore = surface(base + "forearm", mid_fore, palmar, region, 0.035f);
+    add(base + "forearm", joint(lower_id), fore.point, fore.normal);
+    const Hit fore_back = surface(base + "forearm_back", mid_fore, -palmar, region, 0.035f);
+    add(base + "forearm_back", joint(lower_id), fore_back.point, fore_back.normal);
+    // From just below the joint, so the ray does not graze the seam where the arm's parts meet.
+    const Hit tip = surface(base + "elbow", elbow + fore_axis * 0.01f, perpendicular(-forward_, upper_axis), region, 0.04f);
+    add(base + "elbow", joint(lower_id), tip.point, tip.normal);
+    const glm::vec3 outward = perpendicular(left_ * (left ? 1.0f : -1.0f) + up_, upper_axis);
+    const Hit upper = surface(base + "upper_arm", glm::mix(shoulder, elbow, 0.5f), outward, region, 0.045f);
+    add(base + "upper_arm", joint(upper_id), upper.point, upper.normal);
+  }
+};
+
+}  // namespace
+
+std::vector<Anchor> compute_body_anchors(const Avatar& avatar, std::vector<std::string>* warnings) {
+  // The loader guarantees the required joints; a hand-built Avatar without them gets no anchors.
+  if (avatar.canonical_to_joint.size() != static_cast<std::size_t>(skeleton::kHumanoidJointCount) ||
+      avatar.inverse_bind.size() != avatar.skeleton.joints.size()) {
+    if (warnings) warnings->push_back("avatar has no canonical joint map: no anchors");
+    return {};
+  }
+  for (int id = 0; id < skeleton::kHumanoidJointCount; ++id) {
+    if (skeleton::humanoid_joint_required(id) && avatar.canonical_to_joint[static_cast<std::size_t>(id)] < 0) {
+      if (warnings) warnings->push_back("required joint " + std::string(skeleton::humanoid_joint_name(id)) + " missing: no anchors");
+      return {};
+    }
+  }
+  return AnchorBuilder(avatar, warnings).build();
+}
+
+std::vector<std::string> body_anchor_names() {
+  std::vector<std::string> names;
+  for (const char* level : kLevels)
+    for (const char* side : kSides) names.push_back(std::string("body/") + level + "/" + side);
+  for (const char* side : kSides) names.push_back(std::string("space/") + side);
+  for (const char* hand : {"left", "right"}) {
+    for (const char* place : kHandPlaces) names.push_back(std::string("hand/") + hand + "/" + place);
+    for (const char* finger : kFingerNames)
+      for (const char* place : kFingerPlaces) names.push_back(std::string("hand/") + hand + "/" + place + "/" + finger);
+  }
+  for (const char* arm : {"left", "right"})
+    for (const char* place : kArmPlaces) names.push_back(std::string("arm/") + arm + "/" + place);
+  return names;
+}
+
+int find_anchor(const Avatar& avatar, std::string_view name) {
+  for (std::size_t i = 0; i < avatar.anchors.size(); ++i)
+    if (avatar.anchors[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+std::string body_anchor_name(notation::BodyLevel level, notation::Side side) {
+  const auto s = static_cast<std::size_t>(side);
+  const std::string side_name = s < kSides.size() ? kSides[s] : "centre";
+  if (level == notation::BodyLevel::NeutralSpace) return "space/" + side_name;
+  const auto l = static_cast<std::size_t>(level);
+  return std::string("body/") + (l < kLevels.size() ? kLevels[l] : "chest") + "/" + side_name;
+}
+
+std::string hand_anchor_name(bool left, notation::HandPlace place, notation::Finger finger) {
+  using notation::HandPlace;
+  const std::string side = left ? "left" : "right";
+  const auto f = static_cast<std::size_t>(finger);
+  const std::string fname = f < kFingerNames.size() ? kFingerNames[f] : "index";
+  switch (place) {
+    case HandPlace::Palm: return "hand/" + side + "/palm";
+    case HandPlace::BackOfHand: return "hand/" + side + "/back";
+    case HandPlace::ThumbSide: return "hand/" + side + "/thumb_side";
+    case HandPlace::LittleSide: return "hand/" + side + "/little_side";
+    case HandPlace::Fingertip: return "hand/" + side + "/tip/" + fname;
+    case HandPlace::FingerPad: return "hand/" + side + "/pad/" + fname;
+    case HandPlace::FingerNail: return "hand/" + side + "/nail/" + fname;
+    case HandPlace::FingerBase: return "hand/" + side + "/base/" + fname;
+    case HandPlace::FingerMiddleJoint: return "hand/" + side + "/middle_joint/" + fname;
+    case HandPlace::FingerSide: return "hand/" + side + "/side/" + fname;
+    case HandPlace::Wrist: return "hand/" + side + "/wrist";
+    case HandPlace::WristBack: return "hand/" + side + "/wrist_back";
+    case HandPlace::Forearm: return "arm/" + side + "/forearm";
+    case HandPlace::ForearmBack: return "arm/" + side + "/forearm_back";
+    case HandPlace::Elbow: return "arm/" + side + "/elbow";
+    case HandPlace::UpperArm: return "arm/" + side + "/upper_arm";
+  }
+  return "hand/" + side + "/palm";
+}
+
+}  // namespace sw::avatar
