@@ -28,7 +28,8 @@
 //   - at most kMaxValues channel values in total (64 Mi, 512 MiB as double), so a forged
 //     "Frames: 999999999" cannot exhaust memory.
 //
-// Does not: read scale channels or non-standard channel types; a file with them is rejected.
+// Does not: read scale channels or non-standard channel types, or joint names containing spaces;
+// a file with them is rejected with the line. One frame is one line, as every exporter writes it.
 #pragma once
 
 #include <cstddef>

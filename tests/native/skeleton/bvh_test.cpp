@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -287,6 +288,36 @@ TEST(BvhMalformed, EveryPrefixOfAValidFileFailsCleanlyOrParses) {
     if (!r.ok) {
       EXPECT_GE(r.error.line, 1) << n;
       EXPECT_FALSE(r.error.message.empty()) << n;
+    }
+  }
+}
+
+TEST(BvhMalformed, RandomByteMutationsNeverCrash) {
+  // Hostile input: flip, insert or delete bytes at random. Every result is either a parse or an
+  // error inside the file's line range (ASan/UBSan run this too).
+  const std::string arm = kArm;
+  const int lines = 1 + static_cast<int>(std::count(arm.begin(), arm.end(), '\n'));
+  std::mt19937 rng(99);
+  const char alphabet[] = "{}\n\t -.0123456789eEnaifJOINTEndSiteCHANNELS3 6XYZrotationposition:\0\xff";
+  for (int i = 0; i < 3000; ++i) {
+    std::string text = arm;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits && !text.empty(); ++e) {
+      const std::size_t at = rng() % text.size();
+      const char c = alphabet[rng() % (sizeof alphabet - 1)];
+      switch (rng() % 3) {
+        case 0: text[at] = c; break;
+        case 1: text.insert(at, 1, c); break;
+        default: text.erase(at, 1 + rng() % 8); break;
+      }
+    }
+    const BvhReadResult r = read_bvh(text);
+    if (!r.ok) {
+      EXPECT_GE(r.error.line, 1);
+      EXPECT_LE(r.error.line, lines + 8);
+      EXPECT_FALSE(r.error.message.empty());
+    } else {
+      EXPECT_EQ(r.bvh.values.size(), std::size_t(r.bvh.frame_count) * std::size_t(r.bvh.channel_count()));
     }
   }
 }

@@ -1,0 +1,213 @@
+// Arm IK: clavicle + analytic two-bone + swivel + wrist/forearm split (see arm_ik.h).
+#include "synthesis/arm_ik.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sw::synthesis {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+float clampf(float v, float lo, float hi) { return std::min(hi, std::max(lo, v)); }
+
+struct Solved {
+  ArmPose pose;
+  glm::vec3 wrist;
+};
+
+// Shoulder girdle + two-bone chain for one wrist target at one swivel angle.
+struct Chain {
+  glm::quat shoulder{1, 0, 0, 0}, upper{1, 0, 0, 0}, lower0{1, 0, 0, 0};
+  glm::vec3 wrist{0.0f};
+  float elbow_flex = 0.0f, elevation = 0.0f, protraction = 0.0f;
+};
+
+Chain solve_chain(const Rig& rig, Side side, const glm::vec3& wrist_target, float swivel) {
+  const ArmRig& a = rig.arms[side];
+  const ArmLimits& lim = arm_limits();
+  const float l1 = a.upper_len_m, l2 = a.lower_len_m;
+  const glm::vec3 s0 = rig.bind_pos[a.upper];
+  const glm::vec3 out_dir = side == kLeft ? rig.left : -rig.left;  // lateral, away from the body
+  Chain c;
+  glm::vec3 shoulder_pos = s0;
+  // Clavicle: shrug for targets above the shoulder, protract for far ones (comfort first: the
+  // shoulder moves only when the arm alone would be near its reach or high).
+  if (a.shoulder >= 0) {
+    glm::vec3 pivot = rig.bind_pos[a.shoulder];
+    glm::vec3 v = wrist_target - s0;
+    float reach = glm::length(v) / (l1 + l2);
+    float height = glm::dot(v, rig.up) / (l1 + l2);
+    float fwd = std::max(0.0f, glm::dot(safe_normalize(v, rig.forward), rig.forward));
+    c.elevation = clampf(0.6f * (height + 0.15f), 0.0f, lim.clavicle_elevation);
+    c.protraction = clampf(1.2f * (reach - 0.75f) * fwd, 0.0f, lim.clavicle_protraction);
+    glm::vec3 cl = safe_normalize(s0 - pivot, out_dir);
+    glm::vec3 elev_axis = safe_normalize(glm::cross(cl, rig.up), rig.forward);
+    glm::vec3 prot_axis = safe_normalize(glm::cross(cl, rig.forward), rig.up);
+    c.shoulder = axis_angle(prot_axis, c.protraction) * axis_angle(elev_axis, c.elevation);
+    shoulder_pos = pivot + c.shoulder * (s0 - pivot);
+  }
+  // Two-bone: distance clamped between full extension and the elbow's flexion limit.
+  glm::vec3 to = wrist_target - shoulder_pos;
+  float d_max = 0.9995f * (l1 + l2);
+  float d_min = std::sqrt(std::max(1e-8f, l1 * l1 + l2 * l2 - 2.0f * l1 * l2 * std::cos(kPi - lim.elbow_flex_max)));
+  float d = clampf(glm::length(to), d_min, d_max);
+  glm::vec3 axis = safe_normalize(to, out_dir);
+  float cos_a = clampf((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f);
+  float sin_a = std::sqrt(std::max(0.0f, 1.0f - cos_a * cos_a));
+  glm::vec3 down = reject(-rig.up, axis);
+  if (glm::length(down) < 1e-3f) down = reject(-rig.forward, axis);
+  down = glm::normalize(down);
+  glm::vec3 outp = reject(out_dir, axis);
+  outp = safe_normalize(reject(outp, down), glm::cross(axis, down));
+  glm::vec3 sw = std::cos(swivel) * down + std::sin(swivel) * outp;
+  glm::vec3 elbow = shoulder_pos + l1 * (cos_a * axis + sin_a * sw);
+  c.wrist = shoulder_pos + d * axis;
+  c.elbow_flex = kPi - std::acos(clampf((l1 * l1 + l2 * l2 - d * d) / (2.0f * l1 * l2), -1.0f, 1.0f));
+  // Upper arm: bind (bone dir, elbow-bend dir = body forward) -> posed (bone dir, towards the side
+  // the forearm folds to). A T/A-posed elbow flexes towards the body's front.
+  glm::vec3 u1 = safe_normalize(rig.bind_pos[a.lower] - s0, out_dir);
+  glm::vec3 b1 = safe_normalize(reject(rig.forward, u1), rig.forward);
+  glm::vec3 u1p = safe_normalize(elbow - shoulder_pos, axis);
+  glm::vec3 b1p = safe_normalize(reject(-sw, u1p), -sw);
+  c.upper = frame_to_frame(u1, b1, u1p, b1p);
+  glm::vec3 hinge_bind = glm::normalize(glm::cross(u1, b1));
+  glm::vec3 hinge = c.upper * hinge_bind;
+  glm::vec3 u2 = safe_normalize(rig.bind_pos[a.hand] - rig.bind_pos[a.lower], u1);
+  glm::vec3 u2p = safe_normalize(c.wrist - elbow, u1p);
+  c.lower0 = frame_to_frame(u2, glm::cross(hinge_bind, u2), u2p, glm::cross(hinge, u2p));
+  return c;
+}
+
+// Wrist frame in the bind pose: e1 forearm axis, e2 palm normal, e3 = e1 x e2.
+struct WristFrame {
+  glm::vec3 e1, e2, e3;
+  float radial_sign;  // dev * radial_sign = radial deviation
+};
+WristFrame wrist_frame(const Rig& rig, Side side) {
+  const ArmRig& a = rig.arms[side];
+  WristFrame w;
+  w.e1 = safe_normalize(rig.bind_pos[a.hand] - rig.bind_pos[a.lower], a.finger_dir);
+  w.e2 = safe_normalize(reject(a.palm_normal, w.e1), a.palm_normal);
+  w.e3 = glm::cross(w.e1, w.e2);
+  // Positive dev moves the fingers towards -e3: ulnar for a right hand, radial for a left one.
+  w.radial_sign = glm::dot(w.e3, a.radial) > 0.0f ? -1.0f : 1.0f;
+  return w;
+}
+
+// R_rel = lower^-1 * hand decomposed as twist(e1) * deviation(e2) * flexion(e3), each clamped.
+void solve_wrist(const WristFrame& w, const glm::quat& lower0, const glm::quat& hand_delta,
+                 float* twist, float* radial, float* flex) {
+  const ArmLimits& lim = arm_limits();
+  glm::mat3 basis(w.e1, w.e2, w.e3);
+  glm::quat rel = glm::conjugate(lower0) * hand_delta;
+  glm::mat3 m = glm::transpose(basis) * glm::mat3_cast(rel) * basis;
+  auto R = [&](int r, int c) { return m[c][r]; };
+  float tw = std::atan2(-R(1, 2), R(2, 2));
+  float dev = std::asin(clampf(R(0, 2), -1.0f, 1.0f));
+  float fl = std::atan2(-R(0, 1), R(0, 0));
+  *twist = clampf(tw, lim.twist_lo, lim.twist_hi);
+  *radial = clampf(dev * w.radial_sign, -lim.ulnar_dev, lim.radial_dev);
+  *flex = clampf(fl, -lim.wrist_ext, lim.wrist_flex);
+}
+
+void compose(const WristFrame& w, const Chain& c, float twist, float radial, float flex, ArmPose* p) {
+  p->shoulder = c.shoulder;
+  p->upper = c.upper;
+  p->lower = c.lower0 * axis_angle(w.e1, twist);
+  p->hand = p->lower * axis_angle(w.e2, radial * w.radial_sign) * axis_angle(w.e3, flex);
+  p->twist_rad = twist;
+  p->wrist_dev_rad = radial;
+  p->wrist_flex_rad = flex;
+  p->elbow_flex_rad = c.elbow_flex;
+  p->clavicle_elevation_rad = c.elevation;
+  p->clavicle_protraction_rad = c.protraction;
+}
+
+// The wrist target depends on the hand orientation the wrist limits allow, which depends on the
+// forearm, which depends on the wrist target. Phase 1: a damped fixed-point iteration on the
+// requested orientation (undamped it can cycle when a limit is active). Phase 2, only if the
+// contact point still misses: keep the wrist angles and correct the wrist target by the residual
+// (reach before orientation: a touch must touch). The most accurate iterate is kept.
+constexpr int kOrientationRounds = 12;
+constexpr int kReachRounds = 8;
+constexpr float kDamping = 0.5f;
+
+Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
+  const WristFrame w = wrist_frame(rig, side);
+  Solved best;
+  best.pose.reach_error_m = 1e30f;
+  auto consider = [&](const Chain& c, float tw, float rd, float fl) {
+    ArmPose p;
+    p.swivel_rad = swivel;
+    compose(w, c, tw, rd, fl, &p);
+    p.reach_error_m = glm::length(c.wrist + p.hand * t.contact_offset - t.point);
+    p.orientation_error_rad = rotation_angle(glm::conjugate(t.hand_delta) * p.hand);
+    if (p.reach_error_m < best.pose.reach_error_m - 1e-5f) best = Solved{p, c.wrist};
+    return p;
+  };
+  glm::vec3 wrist_target = t.point - t.hand_delta * t.contact_offset;
+  float tw = 0, rd = 0, fl = 0;
+  for (int iter = 0; iter < kOrientationRounds; ++iter) {
+    Chain c = solve_chain(rig, side, wrist_target, swivel);
+    solve_wrist(w, c.lower0, t.hand_delta, &tw, &rd, &fl);
+    ArmPose p = consider(c, tw, rd, fl);
+    glm::vec3 next = t.point - p.hand * t.contact_offset;
+    float step = glm::length(next - wrist_target);
+    wrist_target += (iter == 0 ? 1.0f : kDamping) * (next - wrist_target);
+    if (step < 2e-4f) break;
+  }
+  if (best.pose.reach_error_m > 2e-3f) {
+    tw = best.pose.twist_rad, rd = best.pose.wrist_dev_rad, fl = best.pose.wrist_flex_rad;
+    wrist_target = best.wrist;
+    for (int iter = 0; iter < kReachRounds && best.pose.reach_error_m > 5e-4f; ++iter) {
+      glm::vec3 achieved = best.wrist + best.pose.hand * t.contact_offset;
+      wrist_target += t.point - achieved;
+      Chain c = solve_chain(rig, side, wrist_target, swivel);
+      consider(c, tw, rd, fl);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+const ArmLimits& arm_limits() {
+  static const ArmLimits limits;
+  return limits;
+}
+
+ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
+  if (!t.auto_swivel) return solve_at(rig, side, t, t.swivel_rad).pose;
+  // Comfort heuristic: the elbow hangs down and a little out (25 deg), rising outwards for
+  // targets above the shoulder; among candidates, the one that best realises the requested
+  // orientation (wrist within limits) and reaches, close to that preference, wins.
+  const ArmRig& a = rig.arms[side];
+  glm::vec3 v = t.point - rig.bind_pos[a.upper];
+  float height = glm::dot(v, rig.up) / (a.upper_len_m + a.lower_len_m);
+  float preferred = 0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f);
+  ArmPose best;
+  float best_cost = 1e30f;
+  for (int i = 0; i < 9; ++i) {
+    float swivel = -0.2f + 0.2f * static_cast<float>(i);  // -11 .. 80 degrees
+    ArmPose p = solve_at(rig, side, t, swivel).pose;
+    float cost = 3.0f * p.orientation_error_rad + 0.6f * std::fabs(swivel - preferred) +
+                 20.0f * p.reach_error_m;
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = p;
+    }
+  }
+  return best;
+}
+
+void apply_arm(const Rig& rig, Side side, const ArmPose& p, PoseBuilder* b) {
+  const ArmRig& a = rig.arms[side];
+  if (a.shoulder >= 0) b->set(a.shoulder, p.shoulder);
+  // Deltas are absolute (model space); PoseBuilder places the upper arm through the clavicle's
+  // delta, so it starts where the clavicle put it, as solve_at assumed.
+  b->set(a.upper, p.upper);
+  b->set(a.lower, p.lower);
+  b->set(a.hand, p.hand);
+}
+
+}  // namespace sw::synthesis

@@ -1,0 +1,340 @@
+// Handshape: per-finger states (seed 004 eq. 4) -> joint angles -> finger FK; thumb-contact IK.
+#include "synthesis/handshape.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sw::synthesis {
+namespace {
+
+constexpr float kDeg = 3.14159265358979f / 180.0f;
+
+float clampf(float v, FingerLimits l) { return std::min(l.hi, std::max(l.lo, v)); }
+
+FingerAngles finger_deg(float mcp, float pip, float dip, float abd = 0.0f) {
+  return FingerAngles{mcp * kDeg, pip * kDeg, dip * kDeg, abd * kDeg};
+}
+ThumbAngles thumb_deg(float cf, float ca, float op, float mcp, float ip) {
+  return ThumbAngles{cf * kDeg, ca * kDeg, op * kDeg, mcp * kDeg, ip * kDeg};
+}
+
+FingerAngles lerp(const FingerAngles& a, const FingerAngles& b, float t) {
+  return FingerAngles{a.mcp_flex + t * (b.mcp_flex - a.mcp_flex),
+                      a.pip_flex + t * (b.pip_flex - a.pip_flex),
+                      a.dip_flex + t * (b.dip_flex - a.dip_flex),
+                      a.abduction + t * (b.abduction - a.abduction)};
+}
+ThumbAngles lerp(const ThumbAngles& a, const ThumbAngles& b, float t) {
+  return ThumbAngles{a.cmc_flex + t * (b.cmc_flex - a.cmc_flex), a.cmc_abd + t * (b.cmc_abd - a.cmc_abd),
+                     a.opposition + t * (b.opposition - a.opposition),
+                     a.mcp_flex + t * (b.mcp_flex - a.mcp_flex), a.ip_flex + t * (b.ip_flex - a.ip_flex)};
+}
+
+// Spread fan (degrees of abduction per finger at spread = 1): the index moves radially, the middle
+// stays nearly put, ring and little move ulnarly — the way a hand opens.
+constexpr float kFanDeg[4] = {15.0f, 3.0f, -11.0f, -24.0f};
+// Flexed fingers converge towards the palm's middle (they point at the scaphoid when flexed): a
+// radial tilt of the flexion plane moves a curled finger's tip ulnarly (it lies behind the
+// knuckle), so the index tilts radially and the little finger ulnarly, scaled by the PIP flexion.
+constexpr float kConvergeDeg[4] = {12.0f, 4.0f, -4.0f, -12.0f};
+
+// Begin/end states of the finger configurations (seed eq. 4: t interpolates begin -> end).
+// Config 0 is the seed's pressed (t=0) -> straight (t=1); other configs go straight -> state.
+void finger_states(int id, int finger, FingerAngles* beg, FingerAngles* end) {
+  FingerAngles straight = finger_deg(0, 0, 0);
+  *beg = straight;
+  switch (id) {
+    case notation::kFingerPressedToStraight: *beg = finger_deg(90, 100, 65); *end = straight; return;
+    case notation::kFingerHorizontal: *end = finger_deg(90, 0, 0); return;
+    case notation::kFingerSpread: *end = finger_deg(0, 0, 0, kFanDeg[finger]); return;
+    case notation::kFingerCrossed:  // the middle finger crosses over the straight index
+      *end = finger == 1 ? finger_deg(8, 0, 0, 20) : finger_deg(0, 0, 0, 0); return;
+    case notation::kFingerRound: *end = finger_deg(45, 55, 30); return;
+    case notation::kFingerHooked: *end = finger_deg(0, 95, 70); return;
+    case notation::kFingerDoubleBent: *end = finger_deg(85, 95, 10); return;
+    case notation::kFingerDoubleHooked: *end = finger_deg(60, 105, 80); return;
+    default: *end = straight; return;
+  }
+}
+
+void thumb_states(int id, ThumbAngles* beg, ThumbAngles* end) {
+  ThumbAngles alongside = thumb_deg(15, 0, 0, 0, 0);
+  *beg = alongside;
+  switch (id) {
+    case notation::kThumbPressedToStraight: *beg = thumb_deg(35, 30, 40, 30, 20); *end = alongside; return;
+    case notation::kThumbAgainstPalm: *end = thumb_deg(55, 15, 30, 20, 15); return;
+    case notation::kThumbOut: *end = thumb_deg(-35, 5, 0, 0, 0); return;
+    case notation::kThumbAcross: *end = thumb_deg(45, 35, 45, 35, 25); return;
+    case notation::kThumbOpposed: *end = thumb_deg(5, 55, 45, 10, 10); return;
+    case notation::kThumbPadOnIndex:
+    case notation::kThumbOnMiddle:
+    case notation::kThumbOnRing:
+    case notation::kThumbOnLittle: *end = thumb_deg(25, 45, 50, 20, 20); return;
+    default: *end = alongside; return;
+  }
+}
+
+// Finger geometry measured once per call from the bind pose (hand-relative, hand delta identity).
+struct FingerGeom {
+  glm::vec3 p[4];       // joint positions b0, b1, b2, tip (bind)
+  glm::vec3 d0, s0, kb; // bind bone direction, its palmar normal, flexion axis
+  float flex_bind[3];
+};
+
+FingerGeom finger_geom(const Rig& rig, Side side, int f) {
+  const ArmRig& a = rig.arms[side];
+  const FingerChain& c = a.fingers[f];
+  FingerGeom g;
+  for (int i = 0; i < 3; ++i) g.p[i] = rig.bind_pos[c.bones[i]];
+  g.p[3] = rig.bind_tip(side, f);
+  glm::vec3 n = a.palm_normal;
+  g.d0 = safe_normalize(g.p[1] - g.p[0], a.finger_dir);
+  g.s0 = safe_normalize(reject(n, g.d0), n);
+  g.kb = glm::normalize(glm::cross(g.d0, g.s0));
+  g.flex_bind[0] = 0.0f;
+  glm::vec3 prev = g.d0;
+  for (int i = 1; i < 3; ++i) {
+    glm::vec3 d = safe_normalize(g.p[i + 1] - g.p[i], prev);
+    g.flex_bind[i] = std::atan2(glm::dot(glm::cross(prev, d), g.kb), glm::dot(prev, d));
+    prev = d;
+  }
+  return g;
+}
+
+// Rotations (relative to the hand, in the bind frame) of a finger's three bones.
+void finger_rotations(const Rig& rig, Side side, const FingerGeom& g, const FingerAngles& fa,
+                      glm::quat out[3]) {
+  const ArmRig& a = rig.arms[side];
+  glm::vec3 n = a.palm_normal;
+  glm::vec3 gdir = std::cos(fa.abduction) * a.finger_dir + std::sin(fa.abduction) * a.radial;
+  glm::vec3 d0p = std::cos(fa.mcp_flex) * gdir + std::sin(fa.mcp_flex) * n;
+  glm::vec3 s0p = -std::sin(fa.mcp_flex) * gdir + std::cos(fa.mcp_flex) * n;
+  out[0] = frame_to_frame(g.d0, g.s0, d0p, s0p);
+  out[1] = out[0] * axis_angle(g.kb, fa.pip_flex - g.flex_bind[1]);
+  out[2] = out[1] * axis_angle(g.kb, fa.dip_flex - g.flex_bind[2]);
+}
+
+struct ThumbGeom {
+  glm::vec3 p[4];
+  glm::vec3 u[3];
+  glm::quat align;        // bind metacarpal frame -> neutral thumb frame
+  glm::vec3 neutral_dir, neutral_pad, kt;
+  glm::vec3 flex_axis;    // CMC flexion axis (palm normal, signed)
+  float opp_sign;
+  glm::quat straighten[3];
+};
+
+ThumbGeom thumb_geom(const Rig& rig, Side side) {
+  const ArmRig& a = rig.arms[side];
+  const FingerChain& c = a.fingers[0];
+  ThumbGeom g;
+  for (int i = 0; i < 3; ++i) g.p[i] = rig.bind_pos[c.bones[i]];
+  g.p[3] = rig.bind_tip(side, 0);
+  for (int i = 0; i < 3; ++i) g.u[i] = safe_normalize(g.p[i + 1] - g.p[i], a.finger_dir);
+  glm::vec3 n = a.palm_normal;
+  // Neutral thumb: in the palm plane, 25 degrees radial of the fingers, pad facing ulnar-palmar.
+  const float neutral = 25.0f * kDeg;
+  g.neutral_dir = std::cos(neutral) * a.finger_dir + std::sin(neutral) * a.radial;
+  glm::vec3 radial_perp = safe_normalize(reject(a.radial, g.neutral_dir), a.radial);
+  g.neutral_pad = glm::normalize(0.5f * n - 0.87f * radial_perp);
+  glm::vec3 bind_pad = safe_normalize(reject(n - a.radial, g.u[0]), n);
+  g.align = frame_to_frame(g.u[0], bind_pad, g.neutral_dir, g.neutral_pad);
+  g.kt = glm::normalize(glm::cross(g.neutral_dir, g.neutral_pad));  // flexes towards the pad
+  float s = glm::dot(glm::cross(n, g.neutral_dir), -radial_perp) > 0.0f ? 1.0f : -1.0f;
+  g.flex_axis = s * n;
+  // Opposition turns the pad from ulnar-palmar towards the palm side.
+  glm::vec3 probe = axis_angle(g.neutral_dir, 0.1f) * g.neutral_pad;
+  g.opp_sign = glm::dot(probe, n) > glm::dot(g.neutral_pad, n) ? 1.0f : -1.0f;
+  g.straighten[0] = glm::quat(1, 0, 0, 0);
+  for (int i = 1; i < 3; ++i) {
+    glm::vec3 from = g.u[i], to = g.u[0];
+    float d = glm::dot(from, to);
+    glm::vec3 ax = glm::cross(from, to);
+    g.straighten[i] = glm::length(ax) < 1e-6f ? glm::quat(1, 0, 0, 0)
+                                             : axis_angle(glm::normalize(ax), std::acos(std::min(1.0f, std::max(-1.0f, d))));
+  }
+  return g;
+}
+
+void thumb_rotations(const ThumbGeom& g, const glm::vec3& n, const ThumbAngles& t, glm::quat out[3]) {
+  glm::quat flex = axis_angle(g.flex_axis, t.cmc_flex);
+  glm::vec3 dir1 = flex * g.neutral_dir;
+  glm::vec3 abd_axis = safe_normalize(glm::cross(dir1, n), g.kt);
+  glm::quat cmc = axis_angle(abd_axis, t.cmc_abd) * flex * axis_angle(g.neutral_dir, g.opp_sign * t.opposition);
+  // In the neutral frame the flexion axis is kt; carried by the align rotation back to bind space.
+  glm::quat e0 = cmc * g.align;
+  glm::vec3 kt_bind = glm::conjugate(g.align) * g.kt;
+  out[0] = e0;
+  out[1] = e0 * axis_angle(kt_bind, t.mcp_flex) * g.straighten[1];
+  out[2] = e0 * axis_angle(kt_bind, t.mcp_flex + t.ip_flex) * g.straighten[2];
+}
+
+// Positions (hand-relative, hand delta identity) of a chain's points given its bone rotations.
+void chain_points(const glm::vec3 bind[4], const glm::quat rot[3], glm::vec3 out[4]) {
+  out[0] = bind[0];
+  for (int i = 0; i < 3; ++i) out[i + 1] = out[i] + rot[i] * (bind[i + 1] - bind[i]);
+}
+
+}  // namespace
+
+const HandLimits& hand_limits() {
+  static const HandLimits limits;
+  return limits;
+}
+
+bool within_limits(const HandAngles& a, float tol) {
+  const HandLimits& l = hand_limits();
+  auto in = [tol](float v, FingerLimits r) { return v >= r.lo - tol && v <= r.hi + tol; };
+  const ThumbAngles& t = a.thumb;
+  if (!in(t.cmc_flex, l.cmc_flex) || !in(t.cmc_abd, l.cmc_abd) || !in(t.opposition, l.opposition) ||
+      !in(t.mcp_flex, l.thumb_mcp) || !in(t.ip_flex, l.thumb_ip))
+    return false;
+  for (const auto& f : a.fingers)
+    if (!in(f.mcp_flex, l.mcp) || !in(f.pip_flex, l.pip) || !in(f.dip_flex, l.dip) ||
+        !in(f.abduction, l.abd))
+      return false;
+  return true;
+}
+
+static void clamp_all(HandAngles* a) {
+  const HandLimits& l = hand_limits();
+  ThumbAngles& t = a->thumb;
+  t.cmc_flex = clampf(t.cmc_flex, l.cmc_flex);
+  t.cmc_abd = clampf(t.cmc_abd, l.cmc_abd);
+  t.opposition = clampf(t.opposition, l.opposition);
+  t.mcp_flex = clampf(t.mcp_flex, l.thumb_mcp);
+  t.ip_flex = clampf(t.ip_flex, l.thumb_ip);
+  for (auto& f : a->fingers) {
+    f.mcp_flex = clampf(f.mcp_flex, l.mcp);
+    f.pip_flex = clampf(f.pip_flex, l.pip);
+    f.dip_flex = clampf(f.dip_flex, l.dip);
+    f.abduction = clampf(f.abduction, l.abd);
+  }
+}
+
+HandAngles handshape_angles(const notation::HandShape& shape) {
+  HandAngles out;
+  for (int k = 0; k < notation::kFingerCount; ++k) {
+    const notation::FingerConfig& c = shape.fingers[k];
+    float t = c.has_t ? std::min(1.0f, std::max(0.0f, c.t)) : 1.0f;
+    if (k == 0) {
+      ThumbAngles b, e;
+      thumb_states(c.id, &b, &e);
+      out.thumb = lerp(b, e, t);
+      out.thumb.cmc_flex -= 0.35f * std::min(1.0f, std::max(0.0f, c.spread));  // spread opens the thumb
+    } else {
+      FingerAngles b, e;
+      finger_states(c.id, k - 1, &b, &e);
+      FingerAngles f = lerp(b, e, t);
+      f.abduction += std::min(1.0f, std::max(0.0f, c.spread)) * kFanDeg[k - 1] * kDeg;
+      f.abduction += kConvergeDeg[k - 1] * kDeg * std::min(1.0f, f.pip_flex / (100.0f * kDeg));
+      out.fingers[k - 1] = f;
+    }
+  }
+  clamp_all(&out);
+  return out;
+}
+
+int thumb_contact_finger(const notation::HandShape& shape) {
+  switch (shape.fingers[0].id) {
+    case notation::kThumbPadOnIndex: return 1;
+    case notation::kThumbOnMiddle: return 2;
+    case notation::kThumbOnRing: return 3;
+    case notation::kThumbOnLittle: return 4;
+    default: return -1;
+  }
+}
+
+HandAngles mix(const HandAngles& a, const HandAngles& b, float t) {
+  HandAngles out;
+  out.thumb = lerp(a.thumb, b.thumb, t);
+  for (int i = 0; i < 4; ++i) out.fingers[i] = lerp(a.fingers[i], b.fingers[i], t);
+  return out;
+}
+
+glm::vec3 bind_palm_centre(const Rig& rig, Side side) {
+  const ArmRig& a = rig.arms[side];
+  glm::vec3 knuckles(0.0f);
+  for (int f = 1; f < 5; ++f) knuckles += 0.25f * rig.bind_pos[a.fingers[f].bones[0]];
+  // The palm starts a little distal of the wrist joint (the carpus), so its middle lies 58% of
+  // the way from the wrist joint to the knuckles.
+  glm::vec3 centre = rig.bind_pos[a.hand] + 0.58f * (knuckles - rig.bind_pos[a.hand]);
+  return centre + a.palm_normal * (0.17f * a.palm_width_m);  // half the palm's thickness
+}
+
+void pose_fingers(const Rig& rig, Side side, const HandAngles& angles, const glm::quat& hand,
+                  PoseBuilder* pose) {
+  const ArmRig& a = rig.arms[side];
+  for (int f = 1; f < 5; ++f) {
+    FingerGeom g = finger_geom(rig, side, f);
+    glm::quat r[3];
+    finger_rotations(rig, side, g, angles.fingers[f - 1], r);
+    for (int i = 0; i < 3; ++i) pose->set(a.fingers[f].bones[i], hand * r[i]);
+  }
+  ThumbGeom tg = thumb_geom(rig, side);
+  glm::quat r[3];
+  thumb_rotations(tg, a.palm_normal, angles.thumb, r);
+  for (int i = 0; i < 3; ++i) pose->set(a.fingers[0].bones[i], hand * r[i]);
+}
+
+HandAngles solve_handshape(const Rig& rig, Side side, const notation::HandShape& shape) {
+  HandAngles angles = handshape_angles(shape);
+  int target = thumb_contact_finger(shape);
+  if (target < 0) return angles;
+  const ArmRig& a = rig.arms[side];
+  const HandLimits& lim = hand_limits();
+  FingerGeom fg = finger_geom(rig, side, target);
+  ThumbGeom tg = thumb_geom(rig, side);
+  const FingerAngles configured = angles.fingers[target - 1];
+  const FingerAngles curled = finger_deg(50, 60, 35);  // how far the finger may curl to meet it
+  // Tips meet as in a pinch: the thumb tip sits just off the target tip on its palmar side (the
+  // two pads' skin touching just behind the tip points).
+  const float gap = 0.8f * a.finger_radius_m;
+
+  // x = thumb cmc_flex, cmc_abd, opposition, mcp, ip, target finger curl (0 configured, 1 curled).
+  float x[6] = {angles.thumb.cmc_flex, angles.thumb.cmc_abd, angles.thumb.opposition,
+                angles.thumb.mcp_flex, angles.thumb.ip_flex, 0.0f};
+  const FingerLimits bounds[6] = {lim.cmc_flex, lim.cmc_abd, lim.opposition, lim.thumb_mcp,
+                                  lim.thumb_ip, FingerLimits{0.0f, 1.0f}};
+  auto evaluate = [&](const float* v) {
+    ThumbAngles t{v[0], v[1], v[2], v[3], v[4]};
+    FingerAngles f = lerp(configured, curled, v[5]);
+    glm::quat tr[3], fr[3];
+    thumb_rotations(tg, a.palm_normal, t, tr);
+    finger_rotations(rig, side, fg, f, fr);
+    glm::vec3 tp[4], fp[4];
+    chain_points(tg.p, tr, tp);
+    chain_points(fg.p, fr, fp);
+    glm::vec3 pad = fr[2] * fg.s0;  // palmar side of the distal phalanx
+    glm::vec3 goal = fp[3] + gap * pad;
+    glm::vec3 e = tp[3] - goal;
+    return glm::dot(e, e) + 1e-5f * v[5];  // prefer the finger as configured
+  };
+  // Coordinate descent with shrinking steps: deterministic (native == WASM), bounded work.
+  float best = evaluate(x);
+  float step = 0.25f;
+  for (int sweep = 0; sweep < 60 && step > 2e-4f; ++sweep) {
+    bool improved = false;
+    for (int i = 0; i < 6; ++i) {
+      for (float dir : {1.0f, -1.0f}) {
+        float saved = x[i];
+        float span = i == 5 ? step * 2.0f : step;
+        x[i] = std::min(bounds[i].hi, std::max(bounds[i].lo, saved + dir * span));
+        float c = evaluate(x);
+        if (c < best) {
+          best = c;
+          improved = true;
+          break;
+        }
+        x[i] = saved;
+      }
+    }
+    if (!improved) step *= 0.5f;
+  }
+  angles.thumb = ThumbAngles{x[0], x[1], x[2], x[3], x[4]};
+  angles.fingers[target - 1] = lerp(configured, curled, x[5]);
+  clamp_all(&angles);
+  return angles;
+}
+
+}  // namespace sw::synthesis

@@ -1,0 +1,103 @@
+// Rig: what synthesis needs to know about a loaded humanoid, derived from its BIND POSE only —
+// joint indices of the canonical humanoid chains, model-space bind positions and rotations, the
+// body frame (up / left / forward), per-arm lengths and the hand frame (finger direction, palm
+// normal, radial direction) — plus PoseBuilder, which turns model-space "delta" rotations into the
+// local joint rotations a Clip stores.
+//
+// Why deltas: a posed joint's model rotation is D_j * R_j(bind). Working with D (a rotation of the
+// bind-pose geometry) lets every solver reason with bind-pose directions measured on the avatar
+// itself, so nothing depends on how a particular rig orients its joint axes (any glTF humanoid).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "avatar/avatar.h"
+
+namespace sw::synthesis {
+
+enum Side { kLeft = 0, kRight = 1 };
+inline Side other(Side s) { return s == kLeft ? kRight : kLeft; }
+
+// One finger: three flexing bones (fingers: proximal, intermediate, distal; thumb: metacarpal,
+// proximal, distal) and the tip point (-1 if the avatar has no tip joint: extrapolated).
+struct FingerChain {
+  std::array<int, 3> bones{-1, -1, -1};
+  int tip = -1;
+};
+
+struct ArmRig {
+  int shoulder = -1, upper = -1, lower = -1, hand = -1;
+  std::array<FingerChain, 5> fingers;  // thumb, index, middle, ring, little
+  float upper_len_m = 0.0f, lower_len_m = 0.0f;
+  // Bind-pose hand frame (model space): fingers point along finger_dir, the palm faces
+  // palm_normal, radial points from the little finger towards the index (thumb side).
+  glm::vec3 finger_dir{0.0f}, palm_normal{0.0f}, radial{0.0f};
+  float palm_length_m = 0.0f;   // wrist to the middle knuckle
+  float palm_width_m = 0.0f;    // index knuckle to little knuckle
+  float finger_radius_m = 0.0f; // half the thickness of a finger (collision and contact offsets)
+};
+
+struct Rig {
+  int joint_count = 0;
+  std::vector<int> parent;
+  std::vector<glm::vec3> bind_pos;        // model space
+  std::vector<glm::quat> bind_rot;        // model space
+  std::vector<glm::quat> bind_local_rot;  // local rest rotations (what an unposed clip holds)
+  std::vector<std::string> names;
+  glm::vec3 root_translation{0.0f};
+  int hips = -1, spine = -1, chest = -1, upper_chest = -1, neck = -1, head = -1;
+  std::array<ArmRig, 2> arms;             // kLeft, kRight
+  glm::vec3 up{0, 1, 0}, left{1, 0, 0}, forward{0, 0, 1};  // measured body frame
+  float shoulder_width_m = 0.0f;
+
+  // Tip position in the bind pose (the tip joint, or the distal bone extended).
+  glm::vec3 bind_tip(Side side, int finger) const;
+};
+
+// Builds the rig; returns false with `error` set when a required joint is missing.
+bool build_rig(const avatar::Avatar& avatar, Rig* rig, std::string* error);
+
+// Index of the joint with this canonical VRM humanoid name, or -1.
+int find_canonical_joint(const avatar::Avatar& avatar, const std::string& canonical_name);
+
+// A pose under construction: model-space delta rotations per joint. Unset joints follow their
+// parent (a rigid child). finalize() computes positions and local rotations.
+struct PoseBuilder {
+  explicit PoseBuilder(const Rig& rig);
+  void set(int joint, const glm::quat& delta);
+  void finalize();
+  // Poses from a frame of local rotations (a Clip frame): deltas and positions by FK.
+  void set_from_local(const glm::quat* local);
+  const glm::quat& delta(int joint) const { return delta_[joint]; }
+  const glm::vec3& position(int joint) const { return pos_[joint]; }
+  // Posed model-space point rigidly attached to `joint`, given in the bind pose.
+  glm::vec3 attached(int joint, const glm::vec3& bind_point) const;
+  glm::vec3 tip(Side side, int finger) const;
+  void local_rotations(glm::quat* out) const;  // rig.joint_count entries
+
+  const Rig* rig;
+ private:
+  std::vector<glm::quat> delta_;
+  std::vector<char> is_set_;
+  std::vector<glm::vec3> pos_;
+};
+
+// Small vector helpers shared by the solvers.
+glm::vec3 reject(const glm::vec3& v, const glm::vec3& unit_axis);
+glm::vec3 safe_normalize(const glm::vec3& v, const glm::vec3& fallback);
+glm::quat axis_angle(const glm::vec3& unit_axis, float angle_rad);
+// Rotation taking orthonormal frame (a0, b0, a0 x b0) onto (a1, b1, a1 x b1); b's are
+// orthogonalised against a's first.
+glm::quat frame_to_frame(const glm::vec3& a0, const glm::vec3& b0, const glm::vec3& a1,
+                         const glm::vec3& b1);
+// Shortest-path slerp (never the long way round, never a flip at +-180 degrees).
+glm::quat slerp_shortest(const glm::quat& a, const glm::quat& b, float t);
+// Angle of a rotation, radians in [0, pi].
+float rotation_angle(const glm::quat& q);
+
+}  // namespace sw::synthesis

@@ -1,0 +1,576 @@
+// Sign motion: key states, movement steps, repetitions and two hands -> frames (sign_motion.h).
+#include "synthesis/sign_motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "synthesis/arm_ik.h"
+#include "synthesis/hand_parts.h"
+#include "synthesis/movement.h"
+#include "synthesis/orientation.h"
+
+namespace sw::synthesis {
+
+using notation::BodyLevel;
+using notation::Contact;
+using notation::HandPlace;
+using notation::Location;
+using notation::Movement;
+using notation::MovementKind;
+
+namespace {
+
+const char* level_name(BodyLevel l) {
+  static const char* names[] = {"above_head", "head_top", "head", "forehead", "eyebrows", "eyes",
+                                "nose", "ears", "cheeks", "mouth", "lips", "teeth", "tongue", "chin",
+                                "under_chin", "neck", "shoulders", "shoulder_top", "chest", "stomach",
+                                "belly", "waist", "below_waist", "neutral"};
+  return names[static_cast<int>(l)];
+}
+
+notation::Side mirror_side(notation::Side s) {
+  return static_cast<notation::Side>(4 - static_cast<int>(s));
+}
+
+const char* side_name(notation::Side s) {
+  static const char* names[] = {"right_beside", "right", "centre", "left", "left_beside"};
+  return names[static_cast<int>(s)];
+}
+
+bool is_touch(Contact c) {
+  return c == Contact::Touch || c == Contact::Brush || c == Contact::Grasp || c == Contact::Between;
+}
+
+// How far the contact part stays from the place (m): touch 0, close 5 cm, none 8 cm — the
+// acceptance band for "no contact" is 3-10 cm.
+float contact_distance(Contact c, bool on_hand) {
+  if (is_touch(c)) return 0.0f;
+  if (c == Contact::Close) return on_hand ? 0.04f : 0.05f;
+  return on_hand ? 0.06f : 0.08f;
+}
+
+bool finger_extended(const notation::FingerConfig& f) {
+  return (f.id == notation::kFingerPressedToStraight && (!f.has_t || f.t >= 0.5f)) ||
+         f.id == notation::kFingerSpread || f.id == notation::kFingerCrossed;
+}
+
+// The part of this hand that makes contact: as written (C(...)), else the index fingertip for a
+// pointing hand, the fingertips of a flat hand, the palm otherwise.
+void contact_part(const notation::HandSpec& spec, HandPlace* place, int* finger) {
+  if (spec.location.contact_part) {
+    *place = *spec.location.contact_part;
+    *finger = spec.location.contact_finger >= 0 ? spec.location.contact_finger : 1;
+    return;
+  }
+  const auto& f = spec.shape.fingers;
+  bool idx = finger_extended(f[1]), mid = finger_extended(f[2]), rng = finger_extended(f[3]),
+       lit = finger_extended(f[4]);
+  if (spec.location.kind == Location::Kind::NeutralSpace || !is_touch(spec.location.contact)) {
+    *place = HandPlace::Palm;
+    *finger = 1;
+  } else if (idx && !mid) {
+    *place = HandPlace::Fingertip;
+    *finger = 1;
+  } else if (idx && mid && rng && lit) {
+    *place = HandPlace::Fingertip;
+    *finger = 2;
+  } else {
+    *place = HandPlace::Palm;
+    *finger = 1;
+  }
+}
+
+struct HandState {
+  glm::vec3 target{0.0f};       // absolute; for a hand placed on the other hand: offset from it
+  glm::quat delta{1, 0, 0, 0};
+  HandAngles angles;
+  glm::vec3 offset{0.0f};
+  float swivel = 0.4f;
+};
+
+HandState mix_state(const HandState& a, const HandState& b, float s) {
+  HandState o;
+  o.target = a.target + s * (b.target - a.target);
+  o.delta = slerp_shortest(a.delta, b.delta, s);
+  o.angles = mix(a.angles, b.angles, s);
+  o.offset = a.offset + s * (b.offset - a.offset);
+  o.swivel = a.swivel + s * (b.swivel - a.swivel);
+  return o;
+}
+
+struct HandPlan {
+  Side side = kRight;
+  bool active = false;
+  notation::HandSpec spec;
+  bool mirror_x = false;          // orientation and location mirrored (the other side's hand)
+  MirrorAxes move_mirror;         // movements mirrored
+  bool alternating = false;
+  bool on_other_hand = false;     // location is a place on the other hand/arm
+  HandPlace place = HandPlace::Palm;
+  int place_finger = 1;
+  float place_distance_m = 0.0f;
+  bool exempt_trunk = false, exempt_hand = false;
+  std::vector<std::vector<Movement>> steps;
+};
+
+struct Solver {
+  const SynthContext& ctx;
+  const Rig& rig;
+  std::vector<SynthesisError>* errors;
+  std::string where;
+  PoseBuilder bind_pose;
+  std::array<ArmPose, 2> rest_arm;
+  HandAngles rest_angles;
+
+  Solver(const SynthContext& c, std::vector<SynthesisError>* e, std::string w)
+      : ctx(c), rig(c.rig), errors(e), where(std::move(w)), bind_pose(c.rig) {
+    bind_pose.finalize();
+  }
+
+  glm::vec3 part_offset(Side side, const HandAngles& angles, HandPlace place, int finger) const {
+    PoseBuilder pb(rig);
+    pose_fingers(rig, side, angles, glm::quat(1, 0, 0, 0), &pb);
+    pb.finalize();
+    return hand_part(pb, side, place, finger).point - rig.bind_pos[rig.arms[side].hand];
+  }
+
+  // Absolute target for a body / neutral-space location; false (with an error) if the avatar
+  // lacks the anchor.
+  bool body_target(const HandPlan& plan, const Location& loc, glm::vec3* target, PartPoint* anchor) {
+    std::string name = body_anchor_name(loc, plan.mirror_x);
+    PartPoint p;
+    if (!anchor_point(*ctx.avatar, bind_pose, name, &p)) {
+      errors->push_back({where + (plan.side == kRight ? " right" : " left") + " hand location",
+                         "the avatar has no body anchor '" + name + "'"});
+      return false;
+    }
+    *anchor = p;
+    if (loc.kind == Location::Kind::NeutralSpace || loc.level == BodyLevel::NeutralSpace) {
+      *target = p.point + (loc.contact == Contact::ArmExtended ? 0.15f : 0.0f) * rig.forward;
+      return true;
+    }
+    if (loc.contact == Contact::ArmExtended) {
+      *target = p.point + 0.3f * rig.forward;
+      return true;
+    }
+    *target = p.point + contact_distance(loc.contact, false) * glm::normalize(p.normal);
+    return true;
+  }
+
+  PartPoint other_hand_place(const PoseBuilder& pose, const HandPlan& plan) const {
+    Side o = other(plan.side);
+    PartPoint p;
+    if (!anchor_point(*ctx.avatar, pose, hand_part_anchor_name(o, plan.place, plan.place_finger), &p))
+      p = hand_part(pose, o, plan.place, plan.place_finger);
+    return p;
+  }
+
+  HandState key_state(const HandPlan& plan, const notation::HandSpec& spec, bool* ok,
+                      PartPoint* anchor_out) {
+    HandState st;
+    st.angles = solve_handshape(rig, plan.side, spec.shape);
+    st.delta = hand_delta_for(rig, plan.side, orientation_frame(rig, spec.orientation, plan.side, plan.mirror_x));
+    HandPlace place;
+    int finger;
+    contact_part(spec, &place, &finger);
+    st.offset = part_offset(plan.side, st.angles, place, finger);
+    if (spec.location.kind == Location::Kind::OtherHand) {
+      st.target = glm::vec3(0.0f);  // relative to the other hand's place, added per frame
+      *ok = true;
+      return st;
+    }
+    PartPoint anchor;
+    *ok = body_target(plan, spec.location, &st.target, &anchor);
+    if (anchor_out) *anchor_out = anchor;
+    if (*ok) {
+      ArmTarget t;
+      t.point = st.target;
+      t.contact_offset = st.offset;
+      t.hand_delta = st.delta;
+      ArmPose best = solve_arm(rig, plan.side, t);
+      if (spec.location.kind == Location::Kind::NeutralSpace ||
+          spec.location.level == BodyLevel::NeutralSpace) {
+        // Neutral space is a region, not a point: signers hold an upright hand higher and closer,
+        // a hand pointing away lower and further. Search a few places around the anchor for the
+        // one where the wrist realises the orientation best (a small penalty keeps it central).
+        const float up_steps[4] = {-0.06f, 0.0f, 0.06f, 0.12f};
+        const float in_steps[4] = {-0.12f, -0.06f, 0.0f, 0.05f};
+        glm::vec3 base = st.target;
+        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m;
+        glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
+        for (float dx : {0.0f, 0.08f})
+        for (float du : up_steps)
+          for (float dz : in_steps) {
+            glm::vec3 shift = du * rig.up + dz * rig.forward + dx * outward;
+            t.point = base + shift;
+            ArmPose p = solve_arm(rig, plan.side, t);
+            float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(shift);
+            if (cost < best_cost) {
+              best_cost = cost;
+              best = p;
+              st.target = t.point;
+            }
+          }
+      }
+      st.swivel = best.swivel_rad;
+    }
+    return st;
+  }
+};
+
+std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::SignSpec& sign) {
+  const bool lh = ctx.options.left_handed;
+  const Side dom = lh ? kLeft : kRight;
+  std::array<HandPlan, 2> plans;
+  HandPlan& d = plans[0];
+  d.side = dom;
+  d.active = true;
+  d.spec = sign.dominant;
+  d.mirror_x = lh;
+  d.move_mirror.x = lh;
+  HandPlan& n = plans[1];
+  n.side = other(dom);
+  using notation::Symmetry;
+  const Symmetry sym = sign.symmetry;
+  MirrorAxes sym_axes;
+  sym_axes.x = sym == Symmetry::MirrorLR || sym == Symmetry::MirrorLRUD || sym == Symmetry::MirrorLRIO;
+  sym_axes.y = sym == Symmetry::MirrorLRUD || sym == Symmetry::ParallelUD;
+  sym_axes.z = sym == Symmetry::MirrorLRIO || sym == Symmetry::ParallelIO;
+  if (sign.nondominant) {
+    n.active = true;
+    n.spec = *sign.nondominant;
+    n.mirror_x = lh;  // written for the left hand; a left-handed signer mirrors it too
+    n.move_mirror.x = lh;
+  } else if (sym != Symmetry::None) {
+    n.active = true;
+    n.spec = sign.dominant;
+    n.mirror_x = !lh;
+    n.move_mirror = sym_axes;
+    n.move_mirror.x = sym_axes.x != lh;
+  }
+  for (const auto& step : sign.movements) {
+    d.steps.push_back(step.dominant);
+    std::vector<Movement> nd = step.nondominant;
+    if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place) nd = step.dominant;
+    if (nd.empty() && sym != Symmetry::None && sign.nondominant && !sign.nondominant_is_place)
+      nd = step.dominant;
+    if (!step.nondominant.empty()) {
+      // Written for the non-dominant hand itself: only the signer's handedness mirrors it.
+      n.move_mirror = MirrorAxes{lh, false, false};
+    }
+    n.steps.push_back(sign.nondominant_is_place ? std::vector<Movement>{} : nd);
+    for (const auto& m : step.dominant) n.alternating = n.alternating || m.alternating;
+  }
+  for (auto& p : plans) {
+    const Location& loc = p.spec.location;
+    if (loc.kind == Location::Kind::OtherHand) {
+      p.on_other_hand = true;
+      p.place = loc.hand_place;
+      p.place_finger = loc.finger >= 0 ? loc.finger : 1;
+      p.place_distance_m = contact_distance(loc.contact, true);
+      p.exempt_hand = true;
+    }
+    if (loc.kind == Location::Kind::Body && is_touch(loc.contact)) p.exempt_trunk = true;
+  }
+  // Hands in contact with each other: neither counts as penetrating the other.
+  if (plans[0].on_other_hand || plans[1].on_other_hand) plans[0].exempt_hand = plans[1].exempt_hand = true;
+  return plans;
+}
+
+}  // namespace
+
+std::string body_anchor_name(const Location& loc, bool mirror_x) {
+  notation::Side side = mirror_x ? mirror_side(loc.side) : loc.side;
+  if (loc.kind == Location::Kind::NeutralSpace || loc.level == BodyLevel::NeutralSpace)
+    return std::string("space/") + side_name(side);
+  if (loc.kind == Location::Kind::OtherHand) return "";
+  return std::string("body/") + level_name(loc.level) + "/" + side_name(side);
+}
+
+bool make_context(const avatar::Avatar& avatar, const SynthesisOptions& options, SynthContext* ctx,
+                  std::string* error) {
+  ctx->avatar = &avatar;
+  ctx->options = options;
+  if (!(options.fps >= 5.0f && options.fps <= 240.0f)) {
+    *error = "fps must be between 5 and 240";
+    return false;
+  }
+  if (!(options.speed >= 0.1f && options.speed <= 10.0f)) {
+    *error = "speed must be between 0.1 and 10";
+    return false;
+  }
+  if (!build_rig(avatar, &ctx->rig, error)) return false;
+  ctx->body = build_body_model(avatar, ctx->rig);
+  const Rig& rig = ctx->rig;
+  // Rest pose: arms hanging a little out and forward, hands relaxed, palms to the thighs.
+  PoseBuilder pb(rig);
+  notation::HandShape relaxed;
+  for (int k = 1; k < 5; ++k) relaxed.fingers[k] = notation::FingerConfig{0, true, 0.82f, 0.0f};
+  relaxed.fingers[0] = notation::FingerConfig{notation::kThumbAlongside, false, 1.0f, 0.0f};
+  HandAngles rest = handshape_angles(relaxed);
+  for (int s = 0; s < 2; ++s) {
+    const ArmRig& a = rig.arms[s];
+    glm::vec3 out = s == kLeft ? rig.left : -rig.left;
+    float reach = 0.95f * (a.upper_len_m + a.lower_len_m);
+    ArmTarget t;
+    t.point = rig.bind_pos[a.upper] + reach * glm::normalize(-rig.up + 0.22f * out + 0.12f * rig.forward);
+    t.contact_offset = glm::vec3(0.0f);
+    t.hand_delta = hand_delta_for(rig, static_cast<Side>(s), HandFrame{-rig.up, -out});
+    ArmPose p = solve_arm(rig, static_cast<Side>(s), t);
+    apply_arm(rig, static_cast<Side>(s), p, &pb);
+    pose_fingers(rig, static_cast<Side>(s), rest, p.hand, &pb);
+  }
+  pb.finalize();
+  ctx->rest_locals.resize(rig.joint_count);
+  pb.local_rotations(ctx->rest_locals.data());
+  return true;
+}
+
+bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
+                            const std::string& where, SignMotion* out,
+                            std::vector<SynthesisError>* errors) {
+  const Rig& rig = ctx.rig;
+  const float fps = ctx.options.fps, speed = ctx.options.speed;
+  Solver solver(ctx, errors, where);
+  std::array<HandPlan, 2> plans = make_plans(ctx, sign);
+  if (plans[0].on_other_hand && plans[1].on_other_hand) {
+    errors->push_back({where, "each hand is placed on the other: one of them needs a body or space location"});
+    return false;
+  }
+  if (plans[0].on_other_hand && !plans[1].active) {
+    // A place on the other hand needs that hand: hold it in neutral space, palm up.
+    plans[1].active = true;
+    plans[1].spec = notation::HandSpec{};
+    plans[1].spec.orientation.extended_finger = {1, 0, 1};
+    plans[1].spec.orientation.palm = {0, 1, 0};
+    plans[1].spec.location.kind = Location::Kind::NeutralSpace;
+    plans[1].spec.location.side = notation::Side::Left;
+    plans[1].mirror_x = ctx.options.left_handed;
+    plans[1].steps.assign(plans[0].steps.size(), {});
+  }
+  // Solve order: a hand that is the place of the other goes first.
+  std::array<int, 2> order = {0, 1};
+  if (plans[0].on_other_hand) order = {1, 0};
+
+  // Key states.
+  std::array<HandState, 2> key;
+  size_t before = errors->size();
+  for (int i = 0; i < 2; ++i) {
+    if (!plans[i].active) continue;
+    bool ok = true;
+    key[i] = solver.key_state(plans[i], plans[i].spec, &ok, nullptr);
+  }
+  if (errors->size() > before) return false;
+
+  // Segments: (step, reversed, return-to-start). Repetitions per seed/HamNoSys.
+  struct Segment { int step; bool reversed; bool back_to_start; };
+  std::vector<Segment> segments;
+  const int steps = static_cast<int>(sign.movements.size());
+  for (int s = 0; s < steps; ++s) segments.push_back({s, false, false});
+  using notation::RepeatKind;
+  const auto& rep = sign.repetition;
+  int extra = std::max(1, rep.count);
+  if (rep.kind == RepeatKind::FromStartSeveral || rep.kind == RepeatKind::ContinuingSeveral) extra = std::max(2, rep.count);
+  if (steps > 0 && rep.kind != RepeatKind::None) {
+    for (int r = 0; r < std::min(extra, 8); ++r) {
+      if (rep.kind == RepeatKind::FromStart || rep.kind == RepeatKind::FromStartSeveral) {
+        segments.push_back({-1, false, true});
+        for (int s = 0; s < steps; ++s) segments.push_back({s, false, false});
+      } else if (rep.kind == RepeatKind::Reverse) {
+        bool back = r % 2 == 0;
+        for (int s = 0; s < steps; ++s) {
+          int idx = back ? steps - 1 - s : s;
+          segments.push_back({idx, back, false});
+        }
+      } else {
+        for (int s = 0; s < steps; ++s) segments.push_back({s, false, false});
+      }
+    }
+  }
+
+  // Per-frame targets: for each hand, a function of the frame giving its HandState.
+  struct FrameTarget { std::array<HandState, 2> hand; };
+  std::vector<FrameTarget> frames;
+  auto add_hold = [&](float seconds) {
+    int n = std::max(1, static_cast<int>(std::lround(seconds * fps / speed)));
+    for (int i = 0; i < n; ++i) frames.push_back(frames.back());
+  };
+  frames.push_back(FrameTarget{key});
+  if (steps == 0) {
+    add_hold(ctx.options.hold_s);
+  } else {
+    add_hold(0.08f);
+    std::array<HandState, 2> state = key;
+    std::array<HandState, 2> start_state = key;
+    // Remember each played segment's start and goal (before path offsets) so a reversed one can
+    // retrace it.
+    std::vector<std::array<HandState, 2>> seg_start(steps), seg_goal(steps);
+    for (const Segment& seg : segments) {
+      std::array<HandState, 2> from = state, goal = state;
+      std::array<std::vector<Movement>, 2> ms;
+      float duration = 0.3f, hold = 0.0f;
+      if (seg.back_to_start) {
+        goal = start_state;
+      } else if (seg.reversed) {
+        // Retrace: from the forward segment's goal back to its start, offsets played backwards
+        // (at s = 0 this is exactly where the forward segment ended).
+        from = seg_goal[seg.step];
+        goal = seg_start[seg.step];
+        for (int i = 0; i < 2; ++i)
+          if (seg.step < static_cast<int>(plans[i].steps.size())) ms[i] = plans[i].steps[seg.step];
+        for (int i = 0; i < 2; ++i)
+          for (const auto& m : ms[i]) duration = std::max(duration, movement_duration_s(m));
+      } else {
+        for (int i = 0; i < 2; ++i) {
+          if (!plans[i].active || seg.step >= static_cast<int>(plans[i].steps.size())) continue;
+          ms[i] = plans[i].steps[seg.step];
+          for (const auto& m : ms[i]) {
+            duration = std::max(duration, movement_duration_s(m));
+            hold = std::max(hold, movement_hold_s(m));
+            // Changes of handshape / orientation / location during the movement.
+            notation::HandSpec spec = plans[i].spec;
+            bool changed = false;
+            if (m.to_shape) { spec.shape = *m.to_shape; changed = true; }
+            if (m.to_orientation) { spec.orientation = *m.to_orientation; changed = true; }
+            if (m.to_location && m.to_location->kind != Location::Kind::OtherHand) {
+              spec.location = *m.to_location;
+              changed = true;
+            }
+            if (changed) {
+              bool ok = true;
+              HandState g = solver.key_state(plans[i], spec, &ok, nullptr);
+              if (!ok) return false;
+              if (!m.to_location) g.target = goal[i].target;
+              goal[i].angles = g.angles;
+              goal[i].delta = g.delta;
+              goal[i].offset = g.offset;
+              goal[i].target = g.target;
+              goal[i].swivel = g.swivel;
+            }
+          }
+        }
+        seg_start[seg.step] = from;
+        seg_goal[seg.step] = goal;
+      }
+      int n = std::max(2, static_cast<int>(std::lround(duration * fps / speed)));
+      std::array<HandState, 2> last = from;
+      for (int f = 1; f <= n; ++f) {
+        float s = minimum_jerk(static_cast<float>(f) / n);
+        float path_s = seg.reversed ? 1.0f - s : s;
+        FrameTarget ft;
+        for (int i = 0; i < 2; ++i) {
+          HandState h = mix_state(from[i], goal[i], s);
+          glm::vec3 reference = h.delta * rig.arms[plans[i].side].palm_normal;
+          bool alt = i == 1 && plans[1].alternating;
+          for (const auto& m : ms[i]) {
+            float ps = path_s;
+            if (alt && movement_is_cyclic(m)) {
+              float shifted = std::fmod(ps + 0.5f, 1.0f);
+              h.target += movement_offset(rig, m, plans[i].move_mirror, shifted, reference) -
+                          movement_offset(rig, m, plans[i].move_mirror, 0.5f, reference);
+            } else if (alt) {
+              h.target -= movement_offset(rig, m, plans[i].move_mirror, ps, reference);
+            } else {
+              h.target += movement_offset(rig, m, plans[i].move_mirror, ps, reference);
+            }
+            h.delta = h.delta * wrist_motion(rig, plans[i].side, m, ps);
+            if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
+          }
+          ft.hand[i] = h;
+        }
+        frames.push_back(ft);
+        last = ft.hand;
+      }
+      state = last;
+      if (hold > 0.0f) add_hold(hold);
+    }
+    add_hold(0.12f);
+  }
+
+  // Solve every frame: IK per hand (fixed swivel along the path, so the elbow moves smoothly),
+  // fingers by FK, then push a hand out of the body if it entered it unintentionally.
+  const int J = rig.joint_count;
+  out->frame_count = static_cast<int>(frames.size());
+  out->rotations.resize(static_cast<size_t>(out->frame_count) * J);
+  out->exempt.assign(out->frame_count, 0);
+  std::uint8_t exempt = 0;
+  for (int i = 0; i < 2; ++i) {
+    if (plans[i].exempt_trunk) exempt |= exempt_bit(plans[i].side, false);
+    if (plans[i].exempt_hand) exempt |= exempt_bit(plans[i].side, true);
+  }
+  std::vector<glm::quat> rest_pose_deltas;
+  PoseBuilder rest(rig);
+  rest.set_from_local(ctx.rest_locals.data());
+  for (int f = 0; f < out->frame_count; ++f) {
+    PoseBuilder pb(rig);
+    // Inactive hands keep the rest pose.
+    for (int i = 0; i < 2; ++i) {
+      if (plans[i].active) continue;
+      const ArmRig& a = rig.arms[plans[i].side];
+      for (int j = 0; j < J; ++j) {
+        int p = j;
+        while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
+        if (p >= 0) pb.set(j, rest.delta(j));
+      }
+    }
+    pb.finalize();
+    for (int oi = 0; oi < 2; ++oi) {
+      int i = order[oi];
+      const HandPlan& plan = plans[i];
+      if (!plan.active) continue;
+      const HandState& h = frames[f].hand[i];
+      ArmTarget t;
+      t.point = h.target;
+      if (plan.on_other_hand) {
+        PartPoint place = solver.other_hand_place(pb, plan);
+        t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
+      }
+      t.contact_offset = h.offset;
+      t.hand_delta = h.delta;
+      t.auto_swivel = false;
+      t.swivel_rad = h.swivel;
+      bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
+      for (int attempt = 0; attempt < 4; ++attempt) {
+        ArmPose ap = solve_arm(rig, plan.side, t);
+        apply_arm(rig, plan.side, ap, &pb);
+        pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
+        pb.finalize();
+        if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact))
+          out->max_reach_error_m = std::max(out->max_reach_error_m, ap.reach_error_m);
+        if (!ctx.options.avoid_collisions) break;
+        Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
+        if (pen.depth_m <= 0.002f) break;
+        t.point += pen.push_dir * (pen.depth_m + 0.004f);
+        if (attempt == 0) ++out->pushes;
+      }
+    }
+    pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
+    out->exempt[f] = exempt;
+    if (f == 0) {
+      // Measured distances of the contact parts to their places (acceptance: < 1 cm with touch,
+      // 3-10 cm without).
+      for (int i = 0; i < 2; ++i) {
+        const HandPlan& plan = plans[i];
+        if (!plan.active) continue;
+        HandPlace place;
+        int finger;
+        contact_part(plan.spec, &place, &finger);
+        PartPoint mine = hand_part(pb, plan.side, place, finger);
+        PartPoint anchor;
+        if (plan.on_other_hand) {
+          anchor = solver.other_hand_place(pb, plan);
+        } else if (plan.spec.location.kind == Location::Kind::Body) {
+          if (!anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
+            continue;
+        } else {
+          continue;
+        }
+        out->contact_distance_m.push_back(glm::length(mine.point - anchor.point));
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace sw::synthesis

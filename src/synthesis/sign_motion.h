@@ -1,0 +1,56 @@
+// Sign motion: one SignSpec -> the frames of that sign on one avatar. Key states per hand
+// (handshape, orientation, location), the movement steps as per-frame hand targets solved by arm
+// IK, repetitions, two hands (symmetry, one hand as the place of the other, alternation) and the
+// per-frame push-out when a hand would enter the body. Transitions between signs and the phrase
+// timeline are in transition.h and synthesize.cpp.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "avatar/avatar.h"
+#include "notation/sign_spec.h"
+#include "synthesis/collision.h"
+#include "synthesis/handshape.h"
+#include "synthesis/rig.h"
+#include "synthesis/synthesize.h"
+
+namespace sw::synthesis {
+
+// Everything a synthesis run measures once per avatar.
+struct SynthContext {
+  const avatar::Avatar* avatar = nullptr;
+  Rig rig;
+  BodyModel body;
+  SynthesisOptions options;
+  std::vector<glm::quat> rest_locals;  // the rest pose (arms down, hands relaxed)
+};
+bool make_context(const avatar::Avatar& avatar, const SynthesisOptions& options, SynthContext* ctx,
+                  std::string* error);
+
+// Per-frame exemption from the penetration rule (intended contact), bit per side and kind.
+constexpr std::uint8_t exempt_bit(Side s, bool other_hand) {
+  return static_cast<std::uint8_t>(1u << (static_cast<int>(s) * 2 + (other_hand ? 1 : 0)));
+}
+
+struct SignMotion {
+  int frame_count = 0;
+  std::vector<glm::quat> rotations;   // frame-major, rig.joint_count per frame
+  std::vector<std::uint8_t> exempt;   // per frame, exempt_bit()s
+  float max_reach_error_m = 0.0f;     // touch contacts at the key pose
+  std::vector<float> contact_distance_m;  // per hand with a body/hand location: part -> anchor
+  std::vector<std::string> warnings;
+  int pushes = 0;                     // frames pushed out of the body
+};
+
+// Synthesises one sign's frames (no transitions in or out). `where` prefixes error locations.
+bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
+                            const std::string& where, SignMotion* out,
+                            std::vector<SynthesisError>* errors);
+
+// Name of the body anchor for a location (`body/chest/right`, `space/centre`), mirrored when the
+// hand's side is mirrored; empty for places on the other hand.
+std::string body_anchor_name(const notation::Location& loc, bool mirror_x);
+
+}  // namespace sw::synthesis

@@ -1,0 +1,136 @@
+// Synthesis entry points: the phrase timeline — rest pose, signs, transitions (seed eqs 8-10),
+// holds, pauses at punctuation, global speed — into one Clip with caption segments.
+#include "synthesis/synthesize.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "synthesis/sign_motion.h"
+#include "synthesis/transition.h"
+
+namespace sw::synthesis {
+
+namespace {
+
+struct Timeline {
+  int joints = 0;
+  std::vector<glm::quat> frames;
+  std::vector<std::uint8_t> exempt;
+  int count() const { return joints ? static_cast<int>(frames.size() / joints) : 0; }
+  const glm::quat* last() const { return &frames[frames.size() - joints]; }
+  void append(const glm::quat* f, int n, const std::uint8_t* ex) {
+    frames.insert(frames.end(), f, f + static_cast<size_t>(n) * joints);
+    exempt.insert(exempt.end(), ex, ex + n);
+  }
+};
+
+ClipSegment::Kind segment_kind(PhraseItem::Kind k) {
+  return k == PhraseItem::Kind::Letter ? ClipSegment::Kind::Letter
+       : k == PhraseItem::Kind::Pause  ? ClipSegment::Kind::Pause
+                                       : ClipSegment::Kind::Sign;
+}
+
+}  // namespace
+
+SynthesisResult synthesize_phrase(const std::vector<PhraseItem>& items, const avatar::Avatar& avatar,
+                                  const SynthesisOptions& options) {
+  SynthesisResult result;
+  SynthContext ctx;
+  std::string error;
+  if (!make_context(avatar, options, &ctx, &error)) {
+    result.errors.push_back({"avatar", error});
+    return result;
+  }
+  const Rig& rig = ctx.rig;
+  const int J = rig.joint_count;
+  const float fps = options.fps;
+
+  // Every sign first, so all errors are reported together.
+  std::vector<SignMotion> motions(items.size());
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (items[i].kind == PhraseItem::Kind::Pause) continue;
+    std::string where = "sign " + std::to_string(i + 1) +
+                        (items[i].label.empty() ? "" : " '" + items[i].label + "'");
+    synthesize_sign_motion(ctx, items[i].sign, where, &motions[i], &result.errors);
+  }
+  if (!result.errors.empty()) return result;
+
+  Timeline tl;
+  tl.joints = J;
+  Clip& clip = result.clip;
+  auto add_segment = [&](ClipSegment::Kind kind, const std::string& label, int word, int first, int last) {
+    ClipSegment seg;
+    seg.kind = kind;
+    seg.label = label;
+    seg.word_index = word;
+    seg.start_s = first / static_cast<double>(fps);
+    seg.end_s = last / static_cast<double>(fps);
+    clip.segments.push_back(seg);
+  };
+  auto transition_to = [&](const glm::quat* target, std::uint8_t target_exempt) {
+    if (tl.count() == 0) return;
+    TransitionPlan plan = plan_transition(ctx, tl.last(), target, tl.exempt.back(), target_exempt);
+    result.report.transition_states += plan.k;
+    result.report.via_points_inserted += plan.via_points;
+    int first = tl.count() - 1;
+    if (plan.k > 1) tl.append(plan.frames.data(), plan.k - 1, plan.exempt.data());
+    add_segment(ClipSegment::Kind::Transition, "", -1, first, tl.count());
+  };
+
+  std::vector<std::uint8_t> none(1, 0);
+  if (options.start_from_rest) tl.append(ctx.rest_locals.data(), 1, none.data());
+  for (size_t i = 0; i < items.size(); ++i) {
+    const PhraseItem& item = items[i];
+    if (item.kind == PhraseItem::Kind::Pause) {
+      if (tl.count() == 0) continue;
+      int n = std::max(1, static_cast<int>(std::lround(options.pause_s * fps / options.speed)));
+      int first = tl.count() - 1;
+      std::vector<glm::quat> hold(tl.last(), tl.last() + J);
+      for (int f = 0; f < n; ++f) tl.append(hold.data(), 1, &tl.exempt.back());
+      add_segment(ClipSegment::Kind::Pause, item.label, item.word_index, first, tl.count() - 1);
+      continue;
+    }
+    const SignMotion& m = motions[i];
+    if (m.frame_count == 0) continue;
+    transition_to(m.rotations.data(), m.exempt[0]);
+    int first = tl.count();
+    tl.append(m.rotations.data(), m.frame_count, m.exempt.data());
+    add_segment(segment_kind(item.kind), item.label, item.word_index, first, tl.count() - 1);
+    result.report.max_reach_error_m = std::max(result.report.max_reach_error_m, m.max_reach_error_m);
+    result.report.contact_distances_m.insert(result.report.contact_distances_m.end(),
+                                             m.contact_distance_m.begin(), m.contact_distance_m.end());
+    result.report.warnings.insert(result.report.warnings.end(), m.warnings.begin(), m.warnings.end());
+  }
+  if (options.start_from_rest && tl.count() > 1) {
+    transition_to(ctx.rest_locals.data(), 0);
+    tl.append(ctx.rest_locals.data(), 1, none.data());
+  }
+  if (tl.count() == 0) tl.append(ctx.rest_locals.data(), 1, none.data());
+
+  clip.fps = fps;
+  clip.frame_count = tl.count();
+  clip.joint_names = rig.names;
+  clip.rotations = std::move(tl.frames);
+  clip.root_translation.assign(clip.frame_count, rig.root_translation);
+  result.report.intended_contact = tl.exempt;
+  std::string what;
+  result.report.max_penetration_m =
+      max_penetration(ctx, clip.rotations.data(), clip.frame_count, tl.exempt.data(), &what, nullptr);
+  if (result.report.max_penetration_m > 0.005f)
+    result.report.warnings.push_back("penetration of " +
+                                     std::to_string(result.report.max_penetration_m * 1000.0f) +
+                                     " mm: " + what);
+  return result;
+}
+
+SynthesisResult synthesize_sign(const notation::SignSpec& sign, const avatar::Avatar& avatar,
+                                const SynthesisOptions& options) {
+  PhraseItem item;
+  item.kind = PhraseItem::Kind::Sign;
+  item.sign = sign;
+  item.label = sign.gloss;
+  item.word_index = 0;
+  return synthesize_phrase({item}, avatar, options);
+}
+
+}  // namespace sw::synthesis

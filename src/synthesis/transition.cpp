@@ -1,0 +1,144 @@
+// Transitions: eqs (8)-(10) with slerp + minimum-jerk timing and via-pose routing (transition.h).
+#include "synthesis/transition.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "synthesis/arm_ik.h"
+#include "synthesis/movement.h"
+
+namespace sw::synthesis {
+
+float transition_lmax(const Rig& rig, const glm::quat* a, const glm::quat* b) {
+  PoseBuilder pa(rig), pb(rig);
+  pa.set_from_local(a);
+  pb.set_from_local(b);
+  float lmax = 0.0f;
+  for (int j = 0; j < rig.joint_count; ++j)
+    lmax = std::max(lmax, glm::length(pa.position(j) - pb.position(j)));
+  return lmax;
+}
+
+int transition_states(float lmax_m, float fps, float speed) {
+  float k = kTransitionStatesPerMetre * (fps / 30.0f) * lmax_m / speed;
+  return std::max(kMinTransitionStates, static_cast<int>(std::ceil(k - 1e-4f)));
+}
+
+float max_penetration(const SynthContext& ctx, const glm::quat* frames, int frame_count,
+                      const std::uint8_t* exempt, std::string* what, int* worst_frame) {
+  const Rig& rig = ctx.rig;
+  float worst = 0.0f;
+  PoseBuilder pb(rig);
+  for (int f = 0; f < frame_count; ++f) {
+    pb.set_from_local(frames + static_cast<size_t>(f) * rig.joint_count);
+    for (int s = 0; s < 2; ++s) {
+      Side side = static_cast<Side>(s);
+      bool trunk = !(exempt[f] & exempt_bit(side, false));
+      bool hands = !(exempt[f] & exempt_bit(side, true)) && !(exempt[f] & exempt_bit(other(side), true));
+      Penetration p = hand_penetration(ctx.body, pb, side, trunk, hands);
+      if (p.depth_m > worst) {
+        worst = p.depth_m;
+        if (what) *what = (side == kLeft ? "left hand in " : "right hand in ") + p.what;
+        if (worst_frame) *worst_frame = f;
+      }
+    }
+  }
+  return worst;
+}
+
+namespace {
+
+void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<glm::quat>* delta,
+                 int joints, int k, std::vector<glm::quat>* out) {
+  out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
+  for (int i = 1; i < k; ++i) {
+    float tau = static_cast<float>(i) / k;
+    float e = minimum_jerk(tau);
+    // The via displacement fades in and out with zero slope at both ends (sin^2), peaking at the
+    // middle where e = 0.5, so the path passes exactly through the via-pose.
+    float w = std::sin(3.14159265f * tau);
+    w *= w;
+    for (int j = 0; j < joints; ++j) {
+      glm::quat q = slerp_shortest(a[j], b[j], e);
+      if (delta) q = q * slerp_shortest(glm::quat(1, 0, 0, 0), (*delta)[j], w);
+      (*out)[static_cast<size_t>(i - 1) * joints + j] = glm::normalize(q);
+    }
+  }
+}
+
+}  // namespace
+
+TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, const glm::quat* to,
+                               std::uint8_t exempt_from, std::uint8_t exempt_to) {
+  const Rig& rig = ctx.rig;
+  const int J = rig.joint_count;
+  const float fps = ctx.options.fps, speed = ctx.options.speed;
+  TransitionPlan plan;
+  plan.lmax_m = transition_lmax(rig, from, to);
+  plan.k = transition_states(plan.lmax_m, fps, speed);
+  interpolate(from, to, nullptr, J, plan.k, &plan.frames);
+  auto exempt_for = [&](int k) {
+    std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
+    for (int i = 1; i < k; ++i) {
+      float tau = static_cast<float>(i) / k;
+      if (tau < 0.35f) ex[i - 1] |= exempt_from;
+      if (tau > 0.65f) ex[i - 1] |= exempt_to;
+    }
+    return ex;
+  };
+  plan.exempt = exempt_for(plan.k);
+  if (plan.k < 2) return plan;
+  std::string what;
+  int worst = 0;
+  plan.max_penetration_m = max_penetration(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data(), &what, &worst);
+  if (!ctx.options.avoid_collisions || plan.max_penetration_m <= 0.005f) return plan;
+
+  // Route through a via-pose: the middle state with the offending hand(s) pulled out of the body
+  // (along the escape direction and forward), re-solved by arm IK; orientation and fingers kept.
+  std::vector<glm::quat> mid(J);
+  for (int j = 0; j < J; ++j) mid[j] = slerp_shortest(from[j], to[j], 0.5f);
+  PoseBuilder worst_pose(rig);
+  worst_pose.set_from_local(&plan.frames[static_cast<size_t>(worst) * J]);
+  std::array<glm::vec3, 2> push{};
+  for (int s = 0; s < 2; ++s) {
+    Side side = static_cast<Side>(s);
+    Penetration p = hand_penetration(ctx.body, worst_pose, side, true, true);
+    if (p.depth_m > 0.0f) push[s] = glm::normalize(p.push_dir + rig.forward) * (p.depth_m + 0.03f);
+  }
+  TransitionPlan best = plan;
+  for (int attempt = 1; attempt <= 4; ++attempt) {
+    PoseBuilder pm(rig);
+    pm.set_from_local(mid.data());
+    std::vector<glm::quat> via = mid, arm_locals(J);
+    for (int s = 0; s < 2; ++s) {
+      if (glm::length(push[s]) == 0.0f) continue;
+      Side side = static_cast<Side>(s);
+      const ArmRig& a = rig.arms[s];
+      ArmTarget t;
+      t.point = pm.position(a.hand) + static_cast<float>(attempt) * push[s];
+      t.contact_offset = glm::vec3(0.0f);
+      t.hand_delta = pm.delta(a.hand);
+      PoseBuilder solved(rig);
+      solved.set_from_local(mid.data());
+      apply_arm(rig, side, solve_arm(rig, side, t), &solved);
+      solved.local_rotations(arm_locals.data());
+      for (int j : {a.shoulder, a.upper, a.lower, a.hand})
+        if (j >= 0) via[j] = arm_locals[j];
+    }
+    std::vector<glm::quat> delta(J);
+    for (int j = 0; j < J; ++j) delta[j] = glm::conjugate(mid[j]) * via[j];
+    TransitionPlan p;
+    float l1 = transition_lmax(rig, from, via.data()), l2 = transition_lmax(rig, via.data(), to);
+    p.lmax_m = l1 + l2;  // eq. (10) along the routed path
+    p.k = transition_states(p.lmax_m, fps, speed);
+    p.via_points = 1;
+    interpolate(from, to, &delta, J, p.k, &p.frames);
+    p.exempt = exempt_for(p.k);
+    p.max_penetration_m = max_penetration(ctx, p.frames.data(), p.k - 1, p.exempt.data(), nullptr, nullptr);
+    if (p.max_penetration_m < best.max_penetration_m) best = std::move(p);
+    if (best.max_penetration_m <= 0.005f) break;
+  }
+  return best;
+}
+
+}  // namespace sw::synthesis

@@ -1,0 +1,53 @@
+// Transitions between gestures, seed 004 eqs (8)-(10), made smooth and collision-free.
+//
+//   (8)  theta_i = theta_{i-1} + (theta_beg(G_m) - theta_end(G_l)) / k,   i = 1 .. k-1
+//   (9)  coef = k* / L      (states a native signer uses for a distance L at natural speed)
+//   (10) k = coef * L_max,  L_max = max over bone end points |S_end(G_l) - S_beg(G_m)|
+//
+// We keep the seed's state count k (eq. 10) and its start/end states, but interpolate each joint's
+// rotation by shortest-path slerp (never Euler blending, which flips at +-180 degrees) with the
+// minimum-jerk time law instead of equal steps, so the velocity is zero — hence continuous — where
+// the transition meets the holds of the signs. coef: docs/SYNTHESIS.md (30 states per metre).
+// When a state would pass through the body or the other hand, a via-pose (the hand pulled away
+// from the body) is inserted and the path routed through it (the seed's remedy).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "synthesis/sign_motion.h"
+
+namespace sw::synthesis {
+
+// coef of eq. (9): a natural mean hand speed of 1 m/s sampled at 30 fps gives k* = 30 states for
+// L = 1 m. Scaled by fps/30 for other frame rates.
+constexpr float kTransitionStatesPerMetre = 30.0f;
+// Fewer states cannot carry an ease-in/ease-out profile (k - 1 intermediate states).
+constexpr int kMinTransitionStates = 4;
+
+// Eq. (10): L_max over all joints (bone end points, model space) between two frames.
+float transition_lmax(const Rig& rig, const glm::quat* from_locals, const glm::quat* to_locals);
+// k = ceil(coef * L_max * fps/30 / speed), at least kMinTransitionStates.
+int transition_states(float lmax_m, float fps, float speed);
+
+struct TransitionPlan {
+  int k = 0;                 // states (eq. 10); k-1 intermediate frames are produced
+  float lmax_m = 0.0f;
+  int via_points = 0;
+  float max_penetration_m = 0.0f;  // after routing
+  std::vector<glm::quat> frames;   // (k-1) * joint_count, frame-major
+  std::vector<std::uint8_t> exempt;
+};
+
+// The transition from `from` (last frame of a sign) to `to` (first frame of the next).
+// exempt_from / exempt_to: intended-contact bits of those frames (a hand leaving or arriving at a
+// contact may touch during the first / last third of the transition).
+TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, const glm::quat* to,
+                               std::uint8_t exempt_from, std::uint8_t exempt_to);
+
+// Deepest unintended penetration over frames (exempt bits as in sign_motion.h); `what` names it.
+float max_penetration(const SynthContext& ctx, const glm::quat* frames, int frame_count,
+                      const std::uint8_t* exempt, std::string* what, int* worst_frame);
+
+}  // namespace sw::synthesis

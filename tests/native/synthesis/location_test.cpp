@@ -1,0 +1,189 @@
+// Location acceptance (issue 4): the contact part reaches the body anchor (< 1 cm with touch),
+// stays 3-10 cm away without contact, two hands (the other hand as the place), symmetry and the
+// left-handed option; missing anchors are errors, not crashes.
+#include "synthesis/sign_motion.h"
+
+#include <gtest/gtest.h>
+
+#include "synthesis/arm_ik.h"
+#include "synthesis/hand_parts.h"
+#include "synthesis_fixture.h"
+
+namespace sw::synthesis {
+namespace {
+
+using namespace testing;
+using notation::BodyLevel;
+using notation::Contact;
+using notation::Side;
+
+const BodyLevel kTouchLevels[] = {
+    BodyLevel::HeadTop, BodyLevel::Forehead, BodyLevel::Eyebrows, BodyLevel::Nose, BodyLevel::Cheeks,
+    BodyLevel::Mouth, BodyLevel::Chin, BodyLevel::UnderChin, BodyLevel::Neck, BodyLevel::Shoulders,
+    BodyLevel::Chest, BodyLevel::Stomach, BodyLevel::Belly, BodyLevel::Waist, BodyLevel::BelowWaist};
+
+TEST(SynthesisLocation, TouchReachesEveryBodyPlaceWithin1cm) {
+  for (int variant = 0; variant < 2; ++variant) {
+    avatar::Avatar av = variant == 0 ? make_reference_humanoid() : make_rotated_variant(0.9f);
+    for (BodyLevel level : kTouchLevels)
+      for (Side side : {Side::Right, Side::Centre, Side::Left}) {
+        notation::SignSpec s = sign_at(index_point(), level, side, Contact::Touch);
+        // Face: the finger points up and away; trunk: across the body (to the signer's left),
+        // palm to the body — how a signer touches these places with an index fingertip.
+        bool trunk = static_cast<int>(level) >= static_cast<int>(BodyLevel::Chest);
+        s.dominant.orientation.extended_finger = trunk ? notation::Direction{1, 0, 0} : notation::Direction{0, 1, 1};
+        s.dominant.orientation.palm = notation::Direction{0, 0, -1};
+        SynthesisResult r = synthesize_sign(s, av);
+        ASSERT_TRUE(r.ok()) << r.errors[0].message;
+        ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
+        EXPECT_LT(r.report.contact_distances_m[0], 0.01f)
+            << "variant " << variant << " level " << int(level) << " side " << int(side);
+      }
+  }
+}
+
+TEST(SynthesisLocation, NoContactKeepsTheHand3To10cmAway) {
+  avatar::Avatar av = make_reference_humanoid();
+  for (BodyLevel level : {BodyLevel::Forehead, BodyLevel::Chin, BodyLevel::Chest, BodyLevel::Stomach})
+    for (Contact c : {Contact::None, Contact::Close})
+      for (Side side : {Side::Right, Side::Centre}) {
+        notation::SignSpec s = sign_at(flat(), level, side, c);
+        s.dominant.orientation.extended_finger = {0, 1, 0};
+        s.dominant.orientation.palm = {0, 0, -1};
+        SynthesisResult r = synthesize_sign(s, av);
+        ASSERT_TRUE(r.ok());
+        ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
+        float d = r.report.contact_distances_m[0];
+        EXPECT_GE(d, 0.03f) << "level " << int(level) << " contact " << int(c);
+        EXPECT_LE(d, 0.10f) << "level " << int(level) << " contact " << int(c);
+      }
+}
+
+TEST(SynthesisLocation, ArmJointsStayWithinLimits) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error));
+  const ArmLimits& lim = arm_limits();
+  SynthContext ctx;
+  ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error));
+  PartPoint anchor;
+  PoseBuilder bind(ctx.rig);
+  bind.finalize();
+  for (const auto& a : av.anchors) {
+    if (!anchor_point(av, bind, a.name, &anchor)) continue;
+    ArmTarget t;
+    t.point = anchor.point + 0.05f * anchor.normal;
+    t.hand_delta = axis_angle(glm::vec3(0, 0, 1), 1.0f);
+    ArmPose p = solve_arm(rig, kRight, t);
+    EXPECT_LE(p.elbow_flex_rad, lim.elbow_flex_max + 1e-4f) << a.name;
+    EXPECT_GE(p.elbow_flex_rad, -1e-4f) << a.name;
+    EXPECT_LE(p.twist_rad, lim.twist_hi + 1e-4f) << a.name;
+    EXPECT_GE(p.twist_rad, lim.twist_lo - 1e-4f) << a.name;
+    EXPECT_LE(p.wrist_flex_rad, lim.wrist_flex + 1e-4f) << a.name;
+    EXPECT_GE(p.wrist_flex_rad, -lim.wrist_ext - 1e-4f) << a.name;
+    EXPECT_LE(p.wrist_dev_rad, lim.radial_dev + 1e-4f) << a.name;
+    EXPECT_GE(p.wrist_dev_rad, -lim.ulnar_dev - 1e-4f) << a.name;
+    EXPECT_LE(p.clavicle_elevation_rad, lim.clavicle_elevation + 1e-4f);
+    EXPECT_LE(p.clavicle_protraction_rad, lim.clavicle_protraction + 1e-4f);
+  }
+}
+
+TEST(SynthesisLocation, ClavicleRisesOnlyForHighTargets) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error));
+  ArmTarget low, high;
+  low.point = rig.bind_pos[rig.spine] + glm::vec3(-0.1f, 0.1f, 0.3f);
+  high.point = rig.bind_pos[rig.head] + glm::vec3(-0.1f, 0.25f, 0.15f);
+  EXPECT_NEAR(solve_arm(rig, kRight, low).clavicle_elevation_rad, 0.0f, 1e-4f);
+  EXPECT_GT(solve_arm(rig, kRight, high).clavicle_elevation_rad, 0.1f);
+}
+
+TEST(SynthesisLocation, OtherHandIsThePlace) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error));
+  notation::SignSpec s = sign_at(index_point(), BodyLevel::NeutralSpace, Side::Centre, Contact::Touch);
+  s.dominant.location.kind = notation::Location::Kind::OtherHand;
+  s.dominant.location.hand_place = notation::HandPlace::Palm;
+  s.dominant.orientation.extended_finger = {0, -1, 1};
+  s.dominant.orientation.palm = {0, 0, -1};
+  notation::HandSpec nd;
+  nd.shape = flat();
+  nd.orientation.extended_finger = {-1, 0, 1};
+  nd.orientation.palm = {0, 1, 0};
+  nd.location.kind = notation::Location::Kind::NeutralSpace;
+  nd.location.side = Side::Left;
+  s.nondominant = nd;
+  s.nondominant_is_place = true;
+  SynthesisResult r = synthesize_sign(s, av);
+  ASSERT_TRUE(r.ok()) << r.errors[0].message;
+  // The right index tip on the left palm.
+  PoseBuilder pb = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+  glm::vec3 tip = pb.tip(kRight, 1);
+  PartPoint palm = hand_part(pb, kLeft, notation::HandPlace::Palm, 1);
+  EXPECT_LT(glm::length(tip - palm.point), 0.01f);
+  EXPECT_LE(r.report.max_penetration_m, 0.005f);
+}
+
+TEST(SynthesisLocation, MirrorSymmetryPlacesTheOtherHandOnTheOtherSide) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error));
+  notation::SignSpec s = sign_at(flat(), BodyLevel::Chest, Side::Right, Contact::Close);
+  s.symmetry = notation::Symmetry::MirrorLR;
+  SynthesisResult r = synthesize_sign(s, av);
+  ASSERT_TRUE(r.ok());
+  PoseBuilder pb = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+  glm::vec3 rh = pb.position(rig.arms[kRight].hand), lh = pb.position(rig.arms[kLeft].hand);
+  EXPECT_NEAR(rh.x, -lh.x, 0.01f);
+  EXPECT_NEAR(rh.y, lh.y, 0.01f);
+  EXPECT_NEAR(rh.z, lh.z, 0.01f);
+  EXPECT_LT(rh.x, 0.0f);  // the right hand on the signer's right (-X)
+}
+
+TEST(SynthesisLocation, LeftHandedSignerMirrorsEverything) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error));
+  notation::SignSpec s = sign_at(index_point(), BodyLevel::Cheeks, Side::Right, Contact::Touch);
+  SynthesisOptions lh;
+  lh.left_handed = true;
+  SynthesisResult a = synthesize_sign(s, av), b = synthesize_sign(s, av, lh);
+  ASSERT_TRUE(a.ok() && b.ok());
+  PoseBuilder pa = frame_pose(rig, a.clip, first_sign_frame(a.clip));
+  PoseBuilder pbb = frame_pose(rig, b.clip, first_sign_frame(b.clip));
+  glm::vec3 ra = pa.tip(kRight, 1), lb = pbb.tip(kLeft, 1);
+  EXPECT_NEAR(ra.x, -lb.x, 0.01f);
+  EXPECT_NEAR(ra.y, lb.y, 0.01f);
+  EXPECT_NEAR(ra.z, lb.z, 0.01f);
+  EXPECT_LT(b.report.contact_distances_m[0], 0.01f);
+}
+
+TEST(SynthesisLocation, MissingAnchorIsAnErrorValue) {
+  avatar::Avatar av = make_reference_humanoid();
+  av.anchors.clear();
+  SynthesisResult r = synthesize_sign(sign_at(flat(), BodyLevel::Chin, Side::Centre, Contact::Touch), av);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.errors[0].message.find("body/chin/centre"), std::string::npos) << r.errors[0].message;
+}
+
+TEST(SynthesisLocation, AvatarWithoutArmsIsAnErrorValue) {
+  avatar::Avatar av = make_reference_humanoid();
+  for (auto& j : av.skeleton.joints)
+    if (j.name == "rightLowerArm") j.name = "elbow_r";
+  SynthesisResult r = synthesize_sign(sign_at(flat(), BodyLevel::Chin, Side::Centre, Contact::Touch), av);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.errors[0].where, "avatar");
+  EXPECT_NE(r.errors[0].message.find("rightLowerArm"), std::string::npos);
+  avatar::Avatar empty;
+  EXPECT_FALSE(synthesize_sign(notation::SignSpec{}, empty).ok());
+}
+
+}  // namespace
+}  // namespace sw::synthesis

@@ -1,0 +1,285 @@
+// Movement acceptance: straight lines in the 26 directions, circles in each plane and both senses,
+// sizes relative to the avatar, minimum-jerk timing, manners, repetitions, replacement, wrist and
+// finger motions, alternating hands — measured on the synthesised hand paths.
+#include "synthesis/movement.h"
+
+#include <gtest/gtest.h>
+
+#include "synthesis/hand_parts.h"
+#include "synthesis_fixture.h"
+
+namespace sw::synthesis {
+namespace {
+
+using namespace testing;
+using notation::Direction;
+using notation::Movement;
+using notation::MovementKind;
+
+struct Path {
+  std::vector<glm::vec3> palm[2];
+  std::vector<glm::vec3> wrist[2];
+  std::vector<glm::quat> hand[2];
+  std::vector<glm::vec3> index_tip;
+  double duration_s = 0;
+};
+
+class SynthesisMovement : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    av_ = make_reference_humanoid();
+    std::string error;
+    ASSERT_TRUE(build_rig(av_, &rig_, &error));
+  }
+  notation::SignSpec base() const {
+    notation::SignSpec s = sign_at(flat(), notation::BodyLevel::NeutralSpace, notation::Side::Right,
+                                   notation::Contact::None);
+    s.dominant.orientation.extended_finger = {0, 1, 1};
+    s.dominant.orientation.palm = {1, 0, 0};
+    return s;
+  }
+  Path run(const notation::SignSpec& s) {
+    SynthesisResult r = synthesize_sign(s, av_);
+    EXPECT_TRUE(r.ok());
+    Path p;
+    for (const auto& seg : r.clip.segments) {
+      if (seg.kind != ClipSegment::Kind::Sign) continue;
+      int a = static_cast<int>(std::lround(seg.start_s * r.clip.fps));
+      int b = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+      p.duration_s = seg.end_s - seg.start_s;
+      for (int f = a; f <= b; ++f) {
+        PoseBuilder pb = frame_pose(rig_, r.clip, f);
+        for (int side = 0; side < 2; ++side) {
+          p.palm[side].push_back(hand_part(pb, static_cast<Side>(side), notation::HandPlace::Palm, 1).point);
+          p.wrist[side].push_back(pb.position(rig_.arms[side].hand));
+          p.hand[side].push_back(pb.delta(rig_.arms[side].hand));
+        }
+        p.index_tip.push_back(pb.tip(kRight, 1));
+      }
+    }
+    EXPECT_LE(r.report.max_penetration_m, 0.005f);
+    return p;
+  }
+  notation::SignSpec with(const Movement& m) const {
+    notation::SignSpec s = base();
+    notation::MovementStep step;
+    step.dominant.push_back(m);
+    s.movements.push_back(step);
+    return s;
+  }
+  glm::vec3 signer_dir(Direction d) const {
+    return glm::normalize(static_cast<float>(d.x) * rig_.left + static_cast<float>(d.y) * rig_.up +
+                          static_cast<float>(d.z) * rig_.forward);
+  }
+  avatar::Avatar av_;
+  Rig rig_;
+};
+
+TEST(SynthesisMovementTiming, MinimumJerkStartsAndEndsAtRest) {
+  EXPECT_FLOAT_EQ(minimum_jerk(0.0f), 0.0f);
+  EXPECT_FLOAT_EQ(minimum_jerk(1.0f), 1.0f);
+  EXPECT_NEAR(minimum_jerk(0.5f), 0.5f, 1e-6f);
+  EXPECT_FLOAT_EQ(minimum_jerk_velocity(0.0f), 0.0f);
+  EXPECT_FLOAT_EQ(minimum_jerk_velocity(1.0f), 0.0f);
+  EXPECT_NEAR(minimum_jerk_velocity(0.5f), 1.875f, 1e-5f);
+}
+
+TEST_F(SynthesisMovement, StraightMovesInEachOfThe26Directions) {
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z) {
+        if (!x && !y && !z) continue;
+        Movement m;
+        m.kind = MovementKind::Straight;
+        m.direction = Direction{static_cast<std::int8_t>(x), static_cast<std::int8_t>(y), static_cast<std::int8_t>(z)};
+        Path p = run(with(m));
+        ASSERT_GT(p.palm[kRight].size(), 3u);
+        glm::vec3 d = p.palm[kRight].back() - p.palm[kRight].front();
+        glm::vec3 want = signer_dir(m.direction);
+        float size = movement_size_m(rig_, notation::Size::Normal);
+        EXPECT_GT(glm::dot(glm::normalize(d), want), std::cos(20.0f / 57.3f)) << x << y << z;
+        EXPECT_NEAR(glm::length(d), size, 0.35f * size) << x << y << z;
+      }
+}
+
+TEST_F(SynthesisMovement, StraightPathHasMinimumJerkSpeedProfile) {
+  Movement m;
+  m.kind = MovementKind::Straight;
+  m.direction = {0, 1, 0};
+  m.size = notation::Size::Large;
+  Path p = run(with(m));
+  std::vector<float> speed;
+  for (size_t i = 1; i < p.palm[kRight].size(); ++i) speed.push_back(glm::length(p.palm[kRight][i] - p.palm[kRight][i - 1]));
+  float peak = *std::max_element(speed.begin(), speed.end());
+  ASSERT_GT(peak, 0.0f);
+  // Find the moving part and check it starts and ends slowly.
+  size_t first = 0, last = speed.size() - 1;
+  while (first < speed.size() && speed[first] < 1e-5f) ++first;
+  while (last > 0 && speed[last] < 1e-5f) --last;
+  EXPECT_LT(speed[first], 0.25f * peak);
+  EXPECT_LT(speed[last], 0.25f * peak);
+}
+
+TEST_F(SynthesisMovement, CirclesLieInTheirPlaneAndTurnTheRequestedWay) {
+  const Direction axes[3] = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+  for (const Direction& axis : axes)
+    for (bool cw : {true, false}) {
+      Movement m;
+      m.kind = MovementKind::Circle;
+      m.circle_axis = axis;
+      m.clockwise = cw;
+      Path p = run(with(m));
+      const auto& pts = p.palm[kRight];
+      glm::vec3 a = signer_dir(axis);
+      float lo = 1e9f, hi = -1e9f;
+      glm::vec3 centre(0.0f);
+      for (const auto& q : pts) centre += q / static_cast<float>(pts.size());
+      float turning = 0.0f;
+      for (size_t i = 0; i < pts.size(); ++i) {
+        float h = glm::dot(pts[i], a);
+        lo = std::min(lo, h);
+        hi = std::max(hi, h);
+        if (i > 0) turning += glm::dot(glm::cross(pts[i - 1] - centre, pts[i] - centre), a);
+      }
+      EXPECT_LT(hi - lo, 0.02f) << "axis " << int(axis.x) << int(axis.y) << int(axis.z);
+      // Clockwise as seen looking along the axis = positive rotation about it.
+      EXPECT_GT(cw ? turning : -turning, 0.0f) << "axis " << int(axis.x) << int(axis.y) << int(axis.z) << " cw " << cw;
+      EXPECT_LT(glm::length(pts.back() - pts.front()), 0.01f);  // closes
+    }
+}
+
+TEST_F(SynthesisMovement, SizesAreRelativeToTheAvatar) {
+  float extent[3];
+  const notation::Size sizes[3] = {notation::Size::Small, notation::Size::Normal, notation::Size::Large};
+  for (int i = 0; i < 3; ++i) {
+    Movement m;
+    m.kind = MovementKind::Straight;
+    m.direction = {0, 1, 0};
+    m.size = sizes[i];
+    Path p = run(with(m));
+    extent[i] = glm::length(p.palm[kRight].back() - p.palm[kRight].front());
+  }
+  EXPECT_LT(extent[0], extent[1]);
+  EXPECT_LT(extent[1], extent[2]);
+  EXPECT_NEAR(movement_size_m(rig_, notation::Size::Normal), 0.45f * rig_.arms[kRight].lower_len_m, 1e-5f);
+}
+
+TEST_F(SynthesisMovement, MannerChangesTheDuration) {
+  Movement m;
+  m.kind = MovementKind::Straight;
+  m.direction = {0, 0, 1};
+  m.manner = notation::Manner::Fast;
+  double fast = run(with(m)).duration_s;
+  m.manner = notation::Manner::Slow;
+  double slow = run(with(m)).duration_s;
+  EXPECT_LT(fast, slow);
+}
+
+TEST_F(SynthesisMovement, RepetitionsFromStartAndReversed) {
+  Movement m;
+  m.kind = MovementKind::Straight;
+  m.direction = {0, 1, 0};
+  notation::SignSpec once = with(m);
+  notation::SignSpec twice = once;
+  twice.repetition = {notation::RepeatKind::FromStart, 1};
+  notation::SignSpec back = once;
+  back.repetition = {notation::RepeatKind::Reverse, 1};
+  Path p1 = run(once), p2 = run(twice), p3 = run(back);
+  EXPECT_GT(p2.duration_s, 1.8 * (p1.duration_s - 0.25));
+  // From start: ends where the single movement ends; reverse: back where it began.
+  EXPECT_LT(glm::length(p2.palm[kRight].back() - p1.palm[kRight].back()), 0.01f);
+  EXPECT_LT(glm::length(p3.palm[kRight].back() - p3.palm[kRight].front()), 0.01f);
+  // Continuing twice goes further.
+  notation::SignSpec cont = once;
+  cont.repetition = {notation::RepeatKind::Continuing, 1};
+  Path p4 = run(cont);
+  EXPECT_GT(glm::length(p4.palm[kRight].back() - p4.palm[kRight].front()),
+            1.5f * glm::length(p1.palm[kRight].back() - p1.palm[kRight].front()));
+}
+
+TEST_F(SynthesisMovement, ReplaceChangesTheHandshapeDuringTheMovement) {
+  Movement m;
+  m.kind = MovementKind::Replace;
+  m.to_shape = fist();
+  Path p = run(with(m));
+  glm::vec3 palm0 = p.palm[kRight].front(), palm1 = p.palm[kRight].back();
+  float d0 = glm::length(p.index_tip.front() - palm0), d1 = glm::length(p.index_tip.back() - palm1);
+  EXPECT_GT(d0, 0.08f);
+  EXPECT_LT(d1, 0.05f);
+}
+
+TEST_F(SynthesisMovement, WristNodRotatesTheHandInPlace) {
+  Movement m;
+  m.kind = MovementKind::WristNod;
+  Path p = run(with(m));
+  float max_angle = 0.0f, max_move = 0.0f;
+  for (size_t i = 0; i < p.hand[kRight].size(); ++i) {
+    max_angle = std::max(max_angle, rotation_angle(glm::conjugate(p.hand[kRight][0]) * p.hand[kRight][i]));
+    max_move = std::max(max_move, glm::length(p.wrist[kRight][i] - p.wrist[kRight][0]));
+  }
+  EXPECT_GT(deg(max_angle), 12.0f);
+  EXPECT_LT(max_move, 0.03f);
+}
+
+TEST_F(SynthesisMovement, FingerPlayMovesTheFingersNotTheHand) {
+  Movement m;
+  m.kind = MovementKind::FingerPlay;
+  Path p = run(with(m));
+  float tip_motion = 0.0f, wrist_motion = 0.0f;
+  for (size_t i = 0; i < p.index_tip.size(); ++i) {
+    tip_motion = std::max(tip_motion, glm::length((p.index_tip[i] - p.wrist[kRight][i]) - (p.index_tip[0] - p.wrist[kRight][0])));
+    wrist_motion = std::max(wrist_motion, glm::length(p.wrist[kRight][i] - p.wrist[kRight][0]));
+  }
+  EXPECT_GT(tip_motion, 0.02f);
+  EXPECT_LT(wrist_motion, 0.01f);
+}
+
+TEST_F(SynthesisMovement, AlternatingHandsMoveOutOfPhase) {
+  Movement m;
+  m.kind = MovementKind::Straight;
+  m.direction = {0, 1, 0};
+  m.alternating = true;
+  notation::SignSpec s = with(m);
+  s.symmetry = notation::Symmetry::MirrorLR;
+  Path p = run(s);
+  glm::vec3 dr = p.palm[kRight].back() - p.palm[kRight].front();
+  glm::vec3 dl = p.palm[kLeft].back() - p.palm[kLeft].front();
+  EXPECT_GT(glm::dot(dr, rig_.up), 0.05f);
+  EXPECT_LT(glm::dot(dl, rig_.up), -0.05f);
+}
+
+TEST_F(SynthesisMovement, MirroredSymmetryMovesTheOtherHandTheMirrorWay) {
+  Movement m;
+  m.kind = MovementKind::Straight;
+  m.direction = {-1, 0, 0};  // to the signer's right
+  notation::SignSpec s = with(m);
+  s.symmetry = notation::Symmetry::MirrorLR;
+  Path p = run(s);
+  glm::vec3 dr = p.palm[kRight].back() - p.palm[kRight].front();
+  glm::vec3 dl = p.palm[kLeft].back() - p.palm[kLeft].front();
+  EXPECT_LT(glm::dot(dr, rig_.left), -0.05f);
+  EXPECT_GT(glm::dot(dl, rig_.left), 0.05f);
+}
+
+TEST_F(SynthesisMovement, EveryMovementKindSynthesises) {
+  for (int k = 0; k <= static_cast<int>(MovementKind::Target); ++k)
+    for (int size = 0; size < 3; ++size) {
+      Movement m;
+      m.kind = static_cast<MovementKind>(k);
+      m.direction = {0, 1, 0};
+      m.circle_axis = {0, 0, 1};
+      m.size = static_cast<notation::Size>(size);
+      if (m.kind == MovementKind::Target) {
+        notation::Location to;
+        to.kind = notation::Location::Kind::Body;
+        to.level = notation::BodyLevel::Chin;
+        to.contact = notation::Contact::Close;
+        m.to_location = to;
+      }
+      Path p = run(with(m));
+      EXPECT_GT(p.palm[kRight].size(), 3u) << k;
+    }
+}
+
+}  // namespace
+}  // namespace sw::synthesis

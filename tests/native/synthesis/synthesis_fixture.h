@@ -1,0 +1,96 @@
+// Shared helpers for the synthesis tests: the reference humanoid, a variant with different joint
+// axes and size (synthesis must work on ANY humanoid), sign builders and pose measurements.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "notation/sign_spec.h"
+#include "synthesis/handshape.h"
+#include "synthesis/reference_humanoid.h"
+#include "synthesis/rig.h"
+#include "synthesis/synthesize.h"
+
+namespace sw::synthesis::testing {
+
+// The reference avatar re-rigged: same bind positions scaled by `scale`, but every joint gets a
+// different, non-identity rest rotation (as arbitrary glTF rigs have).
+inline avatar::Avatar make_rotated_variant(float scale) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  build_rig(av, &rig, &error);
+  const int n = rig.joint_count;
+  std::vector<glm::quat> model(n);
+  for (int j = 0; j < n; ++j) {
+    float a = 0.37f * static_cast<float>(j % 7) - 1.1f;
+    glm::vec3 axis = glm::normalize(glm::vec3(std::sin(1.3f * j), std::cos(0.7f * j), 0.5f));
+    model[j] = axis_angle(axis, a);
+  }
+  for (int j = 0; j < n; ++j) {
+    auto& joint = av.skeleton.joints[j];
+    int p = joint.parent;
+    glm::vec3 pos = rig.bind_pos[j] * scale;
+    if (p < 0) {
+      joint.rest.translation = pos;
+      joint.rest.rotation = model[j];
+    } else {
+      glm::vec3 ppos = rig.bind_pos[p] * scale;
+      joint.rest.translation = glm::conjugate(model[p]) * (pos - ppos);
+      joint.rest.rotation = glm::conjugate(model[p]) * model[j];
+    }
+  }
+  // Anchors: same model-space points, scaled; the offset is in the joint's model-space rest frame.
+  for (auto& a : av.anchors) a.offset *= scale;
+  return av;
+}
+
+inline notation::HandShape shape_all(int finger_id, int thumb_id, bool has_t = false, float t = 1.0f,
+                                     float spread = 0.0f) {
+  notation::HandShape s;
+  s.fingers[0] = notation::FingerConfig{thumb_id, has_t, t, 0.0f};
+  for (int k = 1; k < 5; ++k) s.fingers[k] = notation::FingerConfig{finger_id, has_t, t, spread};
+  return s;
+}
+
+inline notation::HandShape fist() { return shape_all(0, 0, true, 0.0f); }
+inline notation::HandShape flat() { return shape_all(0, notation::kThumbAlongside, true, 1.0f); }
+inline notation::HandShape index_point() {
+  notation::HandShape s = fist();
+  s.fingers[1] = notation::FingerConfig{0, true, 1.0f, 0.0f};
+  return s;
+}
+
+inline notation::SignSpec sign_at(const notation::HandShape& shape, notation::BodyLevel level,
+                                  notation::Side side, notation::Contact contact) {
+  notation::SignSpec s;
+  s.gloss = "test";
+  s.dominant.shape = shape;
+  s.dominant.location.kind = level == notation::BodyLevel::NeutralSpace
+                                 ? notation::Location::Kind::NeutralSpace
+                                 : notation::Location::Kind::Body;
+  s.dominant.location.level = level;
+  s.dominant.location.side = side;
+  s.dominant.location.contact = contact;
+  return s;
+}
+
+// Pose of a frame of a clip.
+inline PoseBuilder frame_pose(const Rig& rig, const Clip& clip, int frame) {
+  PoseBuilder pb(rig);
+  pb.set_from_local(&clip.rotations[static_cast<size_t>(frame) * clip.joint_count()]);
+  return pb;
+}
+
+// First frame of the first Sign/Letter segment.
+inline int first_sign_frame(const Clip& clip) {
+  for (const auto& s : clip.segments)
+    if (s.kind == ClipSegment::Kind::Sign || s.kind == ClipSegment::Kind::Letter)
+      return static_cast<int>(std::lround(s.start_s * clip.fps));
+  return 0;
+}
+
+inline float deg(float rad) { return rad * 57.2957795f; }
+
+}  // namespace sw::synthesis::testing
