@@ -86,9 +86,12 @@ bool anchor_point(const avatar::Avatar& avatar, const PoseBuilder& pose, const s
                   PartPoint* out) {
   for (const auto& a : avatar.anchors) {
     if (a.name != name || a.joint < 0 || a.joint >= pose.rig->joint_count) continue;
-    glm::vec3 bind = pose.rig->bind_pos[a.joint] + a.offset;
+    // Anchor offsets are in the joint's bind space (avatar/body_anchors.h): rotate them by the
+    // joint's bind rotation into model space, then by the pose's delta.
+    const glm::quat& bind_rot = pose.rig->bind_rot[a.joint];
+    glm::vec3 bind = pose.rig->bind_pos[a.joint] + bind_rot * a.offset;
     out->point = pose.attached(a.joint, bind);
-    out->normal = pose.delta(a.joint) * a.normal;
+    out->normal = pose.delta(a.joint) * (bind_rot * a.normal);
     return true;
   }
   return false;

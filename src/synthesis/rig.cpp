@@ -6,6 +6,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "skeleton/humanoid_names.h"
+
 namespace sw::synthesis {
 
 glm::vec3 reject(const glm::vec3& v, const glm::vec3& unit_axis) {
@@ -56,11 +58,18 @@ float rotation_angle(const glm::quat& q) {
 }
 
 int find_canonical_joint(const avatar::Avatar& avatar, const std::string& canonical_name) {
-  // The loader (avatar-runtime) names canonical joints through canonical_to_joint; an avatar whose
-  // joints already carry the VRM names (the project's own model) is found by name directly.
+  // The loader maps the rig's own names (Mixamo, VRM 0.x, ...) onto canonical ids in
+  // canonical_to_joint; an avatar built in code without that map is read through the same alias
+  // tables (skeleton/humanoid_names.h).
+  int id = skeleton::canonical_joint_id(canonical_name);
+  if (id < 0) return -1;
+  if (avatar.canonical_to_joint.size() == static_cast<size_t>(skeleton::kHumanoidJointCount)) {
+    int j = avatar.canonical_to_joint[static_cast<size_t>(id)];
+    return j >= 0 && j < avatar.skeleton.joint_count() ? j : -1;
+  }
   const auto& joints = avatar.skeleton.joints;
   for (int i = 0; i < static_cast<int>(joints.size()); ++i)
-    if (joints[i].name == canonical_name) return i;
+    if (skeleton::canonical_joint_id(joints[i].name) == id) return i;
   return -1;
 }
 

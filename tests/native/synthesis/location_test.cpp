@@ -176,7 +176,7 @@ TEST(SynthesisLocation, MissingAnchorIsAnErrorValue) {
 TEST(SynthesisLocation, AvatarWithoutArmsIsAnErrorValue) {
   avatar::Avatar av = make_reference_humanoid();
   for (auto& j : av.skeleton.joints)
-    if (j.name == "rightLowerArm") j.name = "elbow_r";
+    if (j.name == "rightLowerArm") j.name = "bone_017";
   SynthesisResult r = synthesize_sign(sign_at(flat(), BodyLevel::Chin, Side::Centre, Contact::Touch), av);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.errors[0].where, "avatar");

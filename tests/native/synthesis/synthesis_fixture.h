@@ -41,8 +41,11 @@ inline avatar::Avatar make_rotated_variant(float scale) {
       joint.rest.rotation = glm::conjugate(model[p]) * model[j];
     }
   }
-  // Anchors: same model-space points, scaled; the offset is in the joint's model-space rest frame.
-  for (auto& a : av.anchors) a.offset *= scale;
+  // Anchors: same model-space points, scaled; offsets are in the joint's bind space.
+  for (auto& a : av.anchors) {
+    a.offset = glm::conjugate(model[a.joint]) * (a.offset * scale);
+    a.normal = glm::conjugate(model[a.joint]) * a.normal;
+  }
   return av;
 }
 

@@ -1,0 +1,138 @@
+// Transitions (seed 004 eqs 8-10): state counts follow k = coef * L_max, rotations interpolate on
+// the shortest path without flips, velocities are continuous across every join, and a transition
+// that would pass through the body is routed through a via-pose.
+#include "synthesis/transition.h"
+
+#include <gtest/gtest.h>
+
+#include "synthesis_fixture.h"
+
+namespace sw::synthesis {
+namespace {
+
+using namespace testing;
+using notation::BodyLevel;
+using notation::Contact;
+using notation::Side;
+
+std::vector<PhraseItem> letters(const std::vector<notation::SignSpec>& signs) {
+  std::vector<PhraseItem> items;
+  for (size_t i = 0; i < signs.size(); ++i) {
+    PhraseItem it;
+    it.kind = PhraseItem::Kind::Letter;
+    it.sign = signs[i];
+    it.label = std::string(1, static_cast<char>('A' + i));
+    it.word_index = 0;
+    items.push_back(it);
+  }
+  return items;
+}
+
+TEST(SynthesisTransition, StateCountFollowsEquation10) {
+  EXPECT_EQ(transition_states(0.0f, 30.0f, 1.0f), kMinTransitionStates);
+  EXPECT_EQ(transition_states(0.5f, 30.0f, 1.0f), 15);   // 30 states/m * 0.5 m
+  EXPECT_EQ(transition_states(0.5f, 60.0f, 1.0f), 30);   // same duration at 60 fps
+  EXPECT_EQ(transition_states(0.5f, 30.0f, 2.0f), 8);    // twice the speed: ceil(7.5)
+}
+
+TEST(SynthesisTransition, PhraseTransitionsHaveTheStateCountOfEquation10) {
+  avatar::Avatar av = make_reference_humanoid();
+  SynthContext ctx;
+  std::string error;
+  ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error));
+  SynthesisOptions opt;
+  opt.avoid_collisions = false;  // routing lengthens L_max on purpose; test the plain equation
+  SynthesisResult r = synthesize_phrase(
+      letters({sign_at(fist(), BodyLevel::NeutralSpace, Side::Right, Contact::None),
+               sign_at(flat(), BodyLevel::Chin, Side::Centre, Contact::Close),
+               sign_at(index_point(), BodyLevel::Chest, Side::Left, Contact::Close)}),
+      av, opt);
+  ASSERT_TRUE(r.ok());
+  const Clip& c = r.clip;
+  const int J = c.joint_count();
+  int checked = 0;
+  for (const auto& seg : c.segments) {
+    if (seg.kind != ClipSegment::Kind::Transition) continue;
+    int a = static_cast<int>(std::lround(seg.start_s * c.fps)), b = static_cast<int>(std::lround(seg.end_s * c.fps));
+    float lmax = transition_lmax(ctx.rig, &c.rotations[static_cast<size_t>(a) * J], &c.rotations[static_cast<size_t>(b) * J]);
+    EXPECT_EQ(b - a, transition_states(lmax, c.fps, 1.0f)) << "transition at " << seg.start_s;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4);  // rest -> A -> B -> C -> rest
+}
+
+// Angular speed of every joint between consecutive frames; the change of that speed from one
+// frame to the next is bounded (no velocity jump anywhere, joins included).
+float max_velocity_jump(const Clip& c) {
+  const int J = c.joint_count();
+  float worst = 0.0f;
+  for (int f = 1; f + 1 < c.frame_count; ++f)
+    for (int j = 0; j < J; ++j) {
+      const glm::quat& q0 = c.rotations[static_cast<size_t>(f - 1) * J + j];
+      const glm::quat& q1 = c.rotations[static_cast<size_t>(f) * J + j];
+      const glm::quat& q2 = c.rotations[static_cast<size_t>(f + 1) * J + j];
+      // Angular velocity vectors (axis * angle) in the joint's frame.
+      auto omega = [](const glm::quat& a, const glm::quat& b) {
+        glm::quat d = glm::conjugate(a) * b;
+        if (d.w < 0) d = -d;
+        float ang = rotation_angle(d);
+        glm::vec3 v(d.x, d.y, d.z);
+        float len = glm::length(v);
+        return len > 1e-9f ? v / len * ang : glm::vec3(0.0f);
+      };
+      worst = std::max(worst, glm::length(omega(q1, q2) - omega(q0, q1)));
+    }
+  return worst;
+}
+
+TEST(SynthesisTransition, VelocitiesAreContinuousAcrossJoins) {
+  avatar::Avatar av = make_reference_humanoid();
+  SynthesisResult r = synthesize_phrase(
+      letters({sign_at(fist(), BodyLevel::NeutralSpace, Side::Right, Contact::None),
+               sign_at(flat(), BodyLevel::Forehead, Side::Right, Contact::Touch),
+               sign_at(index_point(), BodyLevel::Chest, Side::Centre, Contact::Touch),
+               sign_at(fist(), BodyLevel::NeutralSpace, Side::Centre, Contact::None)}),
+      av);
+  ASSERT_TRUE(r.ok());
+  const Clip& c = r.clip;
+  // Peak angular speed per frame for scale.
+  float peak = 0.0f;
+  const int J = c.joint_count();
+  for (int f = 1; f < c.frame_count; ++f)
+    for (int j = 0; j < J; ++j)
+      peak = std::max(peak, rotation_angle(glm::conjugate(c.rotations[static_cast<size_t>(f - 1) * J + j]) *
+                                           c.rotations[static_cast<size_t>(f) * J + j]));
+  ASSERT_GT(peak, 0.05f);
+  // A velocity jump (a linear blend starting at full speed) would be about the peak itself; with
+  // eased joins the change per frame stays well below it.
+  EXPECT_LT(max_velocity_jump(c), 0.6f * peak);
+  // And exactly at each join the velocity is (nearly) zero on both sides.
+  for (const auto& seg : c.segments) {
+    if (seg.kind != ClipSegment::Kind::Transition) continue;
+    for (double t : {seg.start_s, seg.end_s}) {
+      int f = static_cast<int>(std::lround(t * c.fps));
+      if (f <= 0 || f + 1 >= c.frame_count) continue;
+      for (int j = 0; j < J; ++j) {
+        float before = rotation_angle(glm::conjugate(c.rotations[static_cast<size_t>(f - 1) * J + j]) * c.rotations[static_cast<size_t>(f) * J + j]);
+        float after = rotation_angle(glm::conjugate(c.rotations[static_cast<size_t>(f) * J + j]) * c.rotations[static_cast<size_t>(f + 1) * J + j]);
+        EXPECT_LT(std::fabs(after - before), 0.25f * peak) << "joint " << c.joint_names[j] << " at " << t;
+      }
+    }
+  }
+}
+
+TEST(SynthesisTransition, ShortestPathNeverFlips) {
+  // Two rotations 170 degrees apart the long way and 190 the short way: every interpolated state
+  // must lie on the short arc (angle to either end <= the short distance).
+  glm::quat a = axis_angle(glm::vec3(0, 1, 0), 0.0f);
+  glm::quat b = -axis_angle(glm::vec3(0, 1, 0), 3.3f);  // same rotation, negated quaternion
+  float total = rotation_angle(glm::conjugate(a) * b);
+  for (int i = 0; i <= 10; ++i) {
+    glm::quat q = slerp_shortest(a, b, i / 10.0f);
+    EXPECT_LE(rotation_angle(glm::conjugate(a) * q), total + 1e-4f);
+    EXPECT_LE(rotation_angle(glm::conjugate(q) * b), total + 1e-4f);
+  }
+}
+
+}  // namespace
+}  // namespace sw::synthesis
