@@ -50,6 +50,8 @@ CREATE TABLE signs (
   format     TEXT NOT NULL CHECK (format IN ('formula', 'hamnosys', 'hsigml', 'gsigml')),
   tags       TEXT NOT NULL DEFAULT '[]',
   sense      TEXT NOT NULL DEFAULT '',
+  description TEXT NOT NULL DEFAULT '',
+  starter    INTEGER NOT NULL DEFAULT 0 CHECK (starter IN (0, 1)),
   compiled   TEXT,
   revision   INTEGER NOT NULL CHECK (revision >= 1),
   deleted    INTEGER NOT NULL DEFAULT 0 CHECK (deleted IN (0, 1)),

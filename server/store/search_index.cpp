@@ -327,12 +327,13 @@ SearchPage SearchIndex::search(const SearchQuery& query) const {
         consider(sign, extra == 0 ? 0 : 1, 0, extra, &*it, extra == 0 ? "exact" : "prefix");
       }
     }
-    // Typos: candidates share enough trigrams (an edit destroys at most 3 of them); for short
+    // Typos: candidates share enough trigrams (an insertion, deletion or substitution changes at
+    // most 3 of them, a transposition 4 — "hlelo" keeps only "lo$" of "hello"); for short
     // queries the filter cannot prune, so every term of a near length is a candidate.
     int bound = typo_bound(query_cps.size());
     if (bound > 0) {
       std::vector<std::uint64_t> grams = trigrams_of(query_cps);
-      int needed = static_cast<int>(grams.size()) - 3 * bound;
+      int needed = static_cast<int>(grams.size()) - 4 * bound;
       std::vector<std::uint32_t> candidates;
       if (needed >= 1) {
         std::unordered_map<std::uint32_t, int> shared;

@@ -121,7 +121,7 @@ SignInput parse_sign_input(const json& object, bool require_language) {
   }
   reject_unknown_fields(object,
                         {"language", "gloss", "notation", "format", "tags", "keywords", "sense",
-                         "letter"},
+                         "description", "starter", "letter"},
                         "");
   SignInput input;
   if (object.contains("language") || require_language) {
@@ -131,6 +131,11 @@ SignInput parse_sign_input(const json& object, bool require_language) {
   input.notation = read_string(object, "notation", kMaxNotationBytes, true);
   if (object.contains("format")) input.format = read_string(object, "format", kMaxLabelBytes, true);
   input.sense = read_string(object, "sense", kMaxSenseBytes, false);
+  input.description = read_string(object, "description", kMaxDescriptionBytes, false);
+  if (auto it = object.find("starter"); it != object.end()) {
+    if (!it->is_boolean()) wrong_type("starter", "a boolean", *it);
+    input.starter = it->get<bool>();
+  }
 
   if (auto it = object.find("tags"); it != object.end()) {
     if (!it->is_array()) wrong_type("tags", "an array of strings", *it);
@@ -226,7 +231,8 @@ json sign_content_json(const SignRecord& sign) {
   }
   json out{{"language", sign.language}, {"gloss", sign.gloss},     {"notation", sign.notation},
            {"format", sign.format},     {"tags", sign.tags},       {"keywords", keywords},
-           {"sense", sign.sense}};
+           {"sense", sign.sense},       {"description", sign.description},
+           {"starter", sign.starter}};
   out["letter"] = sign.letter ? json(*sign.letter) : json(nullptr);
   return out;
 }

@@ -18,6 +18,7 @@ constexpr std::size_t kMaxNotationBytes = 64 * 1024;
 constexpr std::size_t kMaxGlossBytes = 200;
 constexpr std::size_t kMaxLabelBytes = 100;     // a tag, a keyword, a language code or name
 constexpr std::size_t kMaxSenseBytes = 1000;
+constexpr std::size_t kMaxDescriptionBytes = 4000;  // a paragraph for reviewers who do not read notation
 constexpr std::size_t kMaxTags = 32;
 constexpr std::size_t kMaxKeywords = 64;
 constexpr std::size_t kMaxLetterCodePoints = 4;  // a letter may be a digraph (CH, LL, Ї)
@@ -42,6 +43,8 @@ struct SignInput {
   std::vector<std::string> tags;
   std::vector<KeywordEntry> keywords;
   std::string sense;
+  std::string description;              // plain-language description of the sign's form
+  bool starter = false;                 // part of the project's starter set (data/)
   std::optional<std::string> letter;    // set: this sign is the fingerspelling of that letter/digit
 };
 
@@ -54,6 +57,8 @@ struct SignRecord {
   std::vector<std::string> tags;
   std::vector<KeywordEntry> keywords;
   std::string sense;
+  std::string description;
+  bool starter = false;
   std::optional<std::string> letter;
   std::optional<std::string> compiled;  // JSON the core compiled from the notation, when present
   std::int64_t revision = 0;

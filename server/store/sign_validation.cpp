@@ -6,13 +6,19 @@
 #include "notation/parse.h"
 #include "store/api_error.h"
 
-// The notation parsers land with src/notation/sign_spec_json.h (the SignSpec <-> JSON converter
-// is written alongside them); before that this build has the parse.h contract but no parser.
-#if __has_include("notation/sign_spec_json.h")
+// The notation parsers land with the formula reader (src/notation/formula.h); before that this
+// build has the parse.h contract but no parser. The SignSpec -> JSON converter (cached as the
+// sign's compiled form) comes separately.
+#if __has_include("notation/formula.h")
 #define SIGNWEAVE_STORE_HAS_PARSER 1
-#include "notation/sign_spec_json.h"
 #else
 #define SIGNWEAVE_STORE_HAS_PARSER 0
+#endif
+#if __has_include("notation/sign_spec_json.h")
+#define SIGNWEAVE_STORE_HAS_SPEC_JSON 1
+#include "notation/sign_spec_json.h"
+#else
+#define SIGNWEAVE_STORE_HAS_SPEC_JSON 0
 #endif
 
 namespace sw::store {
@@ -81,7 +87,9 @@ ValidatedNotation validate_notation(const std::string& notation,
   }
   ValidatedNotation result;
   result.format = format_name(parsed_format);
+#if SIGNWEAVE_STORE_HAS_SPEC_JSON
   result.compiled = json{{"spec", sw::notation::sign_spec_to_json(outcome.signs.front())}}.dump();
+#endif
   return result;
 #else
   (void)notation;

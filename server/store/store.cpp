@@ -46,6 +46,7 @@ std::vector<std::string> parse_tags(const std::string& text) {
 json comparable_content(const std::string& gloss, const std::string& notation,
                         const std::string& format, const std::vector<std::string>& tags,
                         const std::vector<KeywordEntry>& keywords, const std::string& sense,
+                        const std::string& description, bool starter,
                         const std::optional<std::string>& letter) {
   json words = json::array();
   for (const KeywordEntry& keyword : keywords) {
@@ -53,7 +54,8 @@ json comparable_content(const std::string& gloss, const std::string& notation,
                                  keyword.sense.empty() ? sense : keyword.sense}));
   }
   return json{{"gloss", gloss}, {"notation", notation}, {"format", format}, {"tags", tags},
-              {"keywords", words}, {"sense", sense},
+              {"keywords", words}, {"sense", sense}, {"description", description},
+              {"starter", starter},
               {"letter", letter ? json(*letter) : json(nullptr)}};
 }
 
@@ -209,7 +211,7 @@ std::optional<SignRecord> Store::read_sign(Database& db, std::int64_t id) {
   Statement& query = db.prepare(
       "SELECT s.id, s.language, s.gloss, s.notation, s.format, s.tags, s.sense, s.compiled, "
       "s.revision, s.deleted, s.created_at, s.updated_at, "
-      "(SELECT a.letter FROM alphabet a WHERE a.sign_id = s.id LIMIT 1) "
+      "(SELECT a.letter FROM alphabet a WHERE a.sign_id = s.id LIMIT 1), s.description, s.starter "
       "FROM signs s WHERE s.id = ?");
   query.bind(1, id);
   if (!query.step()) {
@@ -230,6 +232,8 @@ std::optional<SignRecord> Store::read_sign(Database& db, std::int64_t id) {
   sign.created_at = query.column_text(10);
   sign.updated_at = query.column_text(11);
   if (!query.column_is_null(12)) sign.letter = query.column_text(12);
+  sign.description = query.column_text(13);
+  sign.starter = query.column_int(14) != 0;
   query.reset();
 
   Statement& keywords = db.prepare(
@@ -294,7 +298,7 @@ SignRecord Store::write_sign(Database& db, std::int64_t existing_id, const SignI
   if (existing_id == 0) {
     db.prepare(
           "INSERT INTO signs (language, gloss, gloss_norm, notation, format, tags, sense, compiled, "
-          "revision, created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, 1, "
+          "description, starter, revision, created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 1, "
           "strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))")
         .bind(1, language)
         .bind(2, input.gloss)
@@ -304,12 +308,14 @@ SignRecord Store::write_sign(Database& db, std::int64_t existing_id, const SignI
         .bind(6, tags)
         .bind(7, input.sense)
         .bind_optional(8, compiled)
+        .bind(9, input.description)
+        .bind(10, input.starter ? 1 : 0)
         .run();
     id = db.last_insert_rowid();
   } else {
     db.prepare(
           "UPDATE signs SET language = ?, gloss = ?, gloss_norm = ?, notation = ?, format = ?, "
-          "tags = ?, sense = ?, compiled = ?, revision = revision + 1, "
+          "tags = ?, sense = ?, compiled = ?, description = ?, starter = ?, revision = revision + 1, "
           "updated_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE id = ?")
         .bind(1, language)
         .bind(2, input.gloss)
@@ -319,7 +325,9 @@ SignRecord Store::write_sign(Database& db, std::int64_t existing_id, const SignI
         .bind(6, tags)
         .bind(7, input.sense)
         .bind_optional(8, compiled)
-        .bind(9, id)
+        .bind(9, input.description)
+        .bind(10, input.starter ? 1 : 0)
+        .bind(11, id)
         .run();
     db.prepare("DELETE FROM sign_keywords WHERE sign_id = ?").bind(1, id).run();
     db.prepare("DELETE FROM alphabet WHERE sign_id = ?").bind(1, id).run();
@@ -544,9 +552,10 @@ ImportReport Store::import_items(const std::vector<ImportItem>& items, const std
         std::optional<SignRecord> current = read_sign(*db, existing);
         json before = comparable_content(current->gloss, current->notation, current->format,
                                          current->tags, current->keywords, current->sense,
-                                         current->letter);
+                                         current->description, current->starter, current->letter);
         json after = comparable_content(sign.input.gloss, sign.input.notation, sign.validated.format,
                                         sign.input.tags, sign.input.keywords, sign.input.sense,
+                                        sign.input.description, sign.input.starter,
                                         sign.input.letter);
         if (before == after) {
           ++report.unchanged;
@@ -695,7 +704,8 @@ std::string Store::content_fingerprint() {
   std::string all;
   const char* const kTables[] = {
       "SELECT code, name, spoken, alphabet_script FROM languages ORDER BY code",
-      "SELECT id, language, gloss, notation, format, tags, sense, revision, deleted, updated_at "
+      "SELECT id, language, gloss, notation, format, tags, sense, description, starter, revision, "
+      "deleted, updated_at "
       "FROM signs ORDER BY id",
       "SELECT id, spoken, word FROM keywords ORDER BY id",
       "SELECT sign_id, keyword_id, sense, position FROM sign_keywords ORDER BY sign_id, keyword_id",
