@@ -253,6 +253,7 @@ const dictionary = new Dictionary({
   keywords: $('sign-keywords'), format: $('sign-format'), notation: $('sign-notation'),
 }, {
   api, language,
+  symbolNames: (text, format) => (core && (format === 'hamnosys' || format === 'hsigml') ? core.hamnosysNames(text) : []),
   onOpen: (sign) => {
     phrase.clearCaption();
     const result = playNotation(sign.notation, sign.format, sign.gloss, { loop: true });

@@ -19,11 +19,12 @@ export function normalizeSign(raw) {
 }
 
 export class Dictionary {
-  constructor(elements, { api, language, onOpen }) {
+  constructor(elements, { api, language, onOpen, symbolNames = () => [] }) {
     this.el = elements;         // { input, status, results, page, gloss, languageLabel, share, keywords, format, notation, edit }
     this.api = api;
     this.language = language;   // () -> current language code
     this.onOpen = onOpen;       // (sign) -> void: play it
+    this.symbolNames = symbolNames;  // (text, format) -> HamNoSys symbol names, for glyph notations
     this.timer = 0;
     this.inflight = null;
     this.current = null;
@@ -115,6 +116,13 @@ export class Dictionary {
     el.keywords.textContent = s.keywords.length ? s.keywords.join(', ') : '—';
     el.format.textContent = `(${s.format})`;
     el.notation.textContent = s.notation;
+    const names = this.symbolNames(s.notation, s.format);
+    if (names.length) {
+      const list = document.createElement('span');
+      list.className = 'symbol-names';
+      list.textContent = names.join(' ');
+      el.notation.append(document.createElement('br'), list);
+    }
     for (const a of el.results.querySelectorAll('a')) {
       if (a.dataset.signId === String(s.id)) a.setAttribute('aria-current', 'true');
       else a.removeAttribute('aria-current');

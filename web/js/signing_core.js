@@ -84,6 +84,11 @@ export class SigningCore {
     return this.current();
   }
 
+  // HamNoSys symbol names of a notation text's code points (glyphs need a HamNoSys font).
+  hamnosysNames(text) {
+    return [...text].map((c) => this.player.hamSymbolName(c.codePointAt(0))).filter(Boolean);
+  }
+
   exportBvh() {
     return this.player.exportBvh();
   }
