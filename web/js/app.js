@@ -130,7 +130,7 @@ async function boot() {
       fetchWithProgress(AVATAR_URL, (f) => { avatarFraction = f; progress(); }),
     ]);
   } catch (err) {
-    fail(err instanceof TypeError
+    fail(err instanceof TypeError && /fetch/i.test(err.message)
       ? 'The Signweave server cannot be reached, so the signer cannot load. Is it running?'
       : `Loading failed: ${err.message}`);
     return;

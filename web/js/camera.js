@@ -39,16 +39,18 @@ export class OrbitCamera {
     const torso = [0, 0.72 * h, 0];
     switch (name) {
       case 'three-quarter':
-        return { yaw: Math.PI / 5, pitch: 0.08, distance: 1.55 * h, target: torso };
+        return { yaw: Math.PI / 5, pitch: 0.12, distance: 1.4 * h, target: [0, 0.62 * h, 0] };
       case 'side':
-        return { yaw: Math.PI / 2, pitch: 0.05, distance: 1.55 * h, target: torso };
+        // The whole figure, slightly from above: the floor and its shadow ground the signer.
+        return { yaw: Math.PI / 2, pitch: 0.12, distance: 1.75 * h, target: [0, 0.55 * h, 0] };
       case 'hands': {
         const c = this.handsCentre || [0, 0.68 * h, 0.2 * h / 1.7];
         return { yaw: Math.PI / 10, pitch: 0.15, distance: 0.42 * h, target: [c[0], c[1], c[2]] };
       }
       case 'front':
       default:
-        return { yaw: 0, pitch: 0.1, distance: 1.6 * h, target: [0, 0.62 * h, 0] };
+        // Signing space: from above the head to mid-thigh, so the hands read at any window size.
+        return { yaw: 0, pitch: 0.06, distance: 1.2 * h, target: [0, 0.68 * h, 0] };
     }
   }
 

@@ -13,8 +13,10 @@ import { loadCore } from './core_loader.js';
 
 export class SigningCore {
   static async create({ onProgress = () => {} } = {}) {
-    const loaded = await loadCore({ onProgress });
-    return new SigningCore(loaded.module, loaded.flavour);
+    onProgress(0.1);
+    const module = await loadCore();
+    onProgress(1);
+    return new SigningCore(module, module.flavour);
   }
 
   constructor(module, flavour) {
