@@ -415,7 +415,7 @@ function frame(now) {
       metrics.frameWorkSamples.push(metrics.frameWork_ms);
       if (metrics.frameWorkSamples.length > 240) metrics.frameWorkSamples.shift();
       if (debugVisible) renderer.setDebugGeometry(views.jointPositions, core.info.parents, views.anchorPositions);
-      updateFraming(views.jointPositions);
+      updateFraming(views.jointPositions, views.anchorPositions);
       poseDirty = false;
     }
     renderer.draw(camera, { showDebug: debugVisible });
@@ -430,19 +430,16 @@ function frame(now) {
   requestAnimationFrame(frame);
 }
 
-// The hands close-up preset follows the hands; the floor shadow follows the hips.
-function updateFraming(jointPositions) {
+// The hands close-up frames neutral signing space (the body anchor space/centre, where most signs
+// happen), so it stays put between signs instead of chasing hands that drop to rest; the floor
+// shadow follows the hips.
+function updateFraming(jointPositions, anchorPositions) {
   const j = core.info.named;
-  if (!j) return;
-  const at = (i) => [jointPositions[i * 3], jointPositions[i * 3 + 1], jointPositions[i * 3 + 2]];
-  if (j.leftHand >= 0 && j.rightHand >= 0) {
-    const l = at(j.leftHand), r = at(j.rightHand);
-    camera.handsCentre = [(l[0] + r[0]) / 2, (l[1] + r[1]) / 2, (l[2] + r[2]) / 2];
+  const space = core.info.anchors.indexOf('space/centre');
+  if (space >= 0 && anchorPositions) {
+    camera.handsCentre = [anchorPositions[space * 3], anchorPositions[space * 3 + 1], anchorPositions[space * 3 + 2]];
   }
-  if (j.hips >= 0) {
-    const h = at(j.hips);
-    renderer.shadowCentre = [h[0], h[2]];
-  }
+  if (j && j.hips >= 0) renderer.shadowCentre = [jointPositions[j.hips * 3], jointPositions[j.hips * 3 + 2]];
 }
 
 let shownWord = -2;
