@@ -130,3 +130,9 @@ export async function canvasPixels(page) {
 export async function waitForTime(page, time_s, timeout = 30_000) {
   await page.waitForFunction((t) => window.signweave.state.time_s >= t, time_s, { timeout });
 }
+
+// Wait until the page has drawn `count` more frames (after a seek, so the pixels show the new pose).
+export async function nextFrames(page, count = 2) {
+  const start = await page.evaluate(() => window.signweave.metrics.frames);
+  await page.waitForFunction((n) => window.signweave.metrics.frames >= n, start + count, { timeout: 30_000 });
+}

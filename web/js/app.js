@@ -20,16 +20,6 @@ import { SigningCore } from './signing_core.js';
 const AVATAR_URL = 'models/signweave-avatar.glb';
 const $ = (id) => document.getElementById(id);
 
-const state = {
-  ready: false,
-  currentSign: null,     // gloss (or letter) of the segment under the play head
-  currentWord: null,     // word of the typed phrase being signed
-  time_s: 0,
-  playing: false,
-  clipDuration_s: 0,
-  error: null,
-  flavour: null,         // which WebAssembly build runs: 'simd' or 'scalar'
-};
 const metrics = {
   firstSigningFrame_ms: null,   // performance.now() of the first frame drawn while a clip plays
   frameWork_ms: 0,              // last frame's pose + skinning + upload on the main thread
@@ -39,6 +29,26 @@ const metrics = {
 const api = new ApiClient();
 const camera = new OrbitCamera();
 const playback = new Playback();
+// Live views of the playback (getters), so a test reading right after an action sees its effect
+// without waiting for the next frame.
+const state = {
+  ready: false,
+  error: null,
+  flavour: null,         // which WebAssembly build runs: 'simd' or 'scalar'
+  get time_s() { return playback.time_s; },
+  get playing() { return playback.playing; },
+  get clipDuration_s() { return playback.duration_s; },
+  // Gloss (or letter) of the sign segment under the play head; null in transitions and pauses.
+  get currentSign() {
+    const segment = playback.currentSegment();
+    return segment && segment.kind !== 'transition' && segment.kind !== 'pause' ? segment.label : null;
+  },
+  // The word of the typed phrase being signed.
+  get currentWord() {
+    const i = playback.currentWordIndex();
+    return i >= 0 && tokens[i] ? tokens[i].word : null;
+  },
+};
 let renderer = null;
 let core = null;
 let source = null;              // what the clip was made from, to re-synthesise (left-handed, face)
@@ -209,7 +219,7 @@ function playNotation(text, format, label, { loop = true } = {}) {
   clipLabel = label || 'sign';
   playback.loop = loop;
   $('loop').checked = loop;
-  return applyResult(core.setNotation(text, format, synthesisOptions()));
+  return applyResult(core.setNotation(text, format, { ...synthesisOptions(), label: clipLabel }));
 }
 
 // A cache of sign notations by id: a phrase often repeats letters, and re-signing a phrase with
@@ -238,7 +248,7 @@ function resynthesise() {
   const t = playback.time_s, wasPlaying = playback.playing;
   const result = source.kind === 'phrase'
     ? core.setPhrase({ items: source.items }, synthesisOptions())
-    : core.setNotation(source.text, source.format, synthesisOptions());
+    : core.setNotation(source.text, source.format, { ...synthesisOptions(), label: clipLabel });
   if (!result.ok) return;
   playback.setClip(result.duration_s, result.segments || []);
   playback.seek(Math.min(t, result.duration_s));
@@ -367,6 +377,10 @@ function setupFace(info) {
 }
 
 // ------------------------------------------------------------------------------------ export
+// The menu closes once a choice is made.
+for (const id of ['export-bvh', 'export-glb', 'export-webm']) {
+  $(id).addEventListener('click', (e) => { e.currentTarget.closest('details').open = false; });
+}
 $('export-bvh').addEventListener('click', () => {
   if (!core || !source) return;
   download(core.exportBvh(), `${safeFileStem(clipLabel)}.bvh`, 'text/plain');
@@ -444,13 +458,7 @@ function updateFraming(jointPositions, anchorPositions) {
 
 let shownWord = -2;
 function publishState() {
-  const segment = playback.currentSegment();
   const wordIndex = playback.currentWordIndex();
-  state.time_s = playback.time_s;
-  state.playing = playback.playing;
-  state.clipDuration_s = playback.duration_s;
-  state.currentSign = segment && segment.kind !== 'transition' && segment.kind !== 'pause' ? segment.label : null;
-  state.currentWord = wordIndex >= 0 && tokens[wordIndex] ? tokens[wordIndex].word : null;
   if (wordIndex !== shownWord) { phrase.highlight(wordIndex); shownWord = wordIndex; }
   const timeline = $('timeline');
   if (document.activeElement !== timeline || playback.playing) {
