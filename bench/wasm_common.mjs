@@ -4,18 +4,27 @@ import { FLAVOURS, loadCore } from '../tests/node/wasm_loader.mjs';
 
 export { FLAVOURS, loadCore };
 
-// Runs `body` repeatedly for at least minSeconds (after a warm-up that lets the JIT tier up) and
-// returns mean nanoseconds per call; `body` may itself loop, then pass its inner count as perCall.
-export function timeNsPerCall(body, { minSeconds = 0.3, perCall = 1 } = {}) {
+// Mean nanoseconds per call of `body` over at least minSeconds (after a warm-up that lets the JIT
+// tier up); `body` may itself loop, then pass its inner count as perCall. The best of `repeats`
+// such timings is returned: the machine is shared, and the fastest run estimates the work itself
+// where a mean would mostly measure the neighbours (bench/fk_bench.cpp does the same natively).
+export function timeNsPerCall(body, { minSeconds = 0.05, perCall = 1, repeats = 10 } = {}) {
   for (let i = 0; i < 20; ++i) body();
-  let iterations = 1;
-  for (;;) {
-    const start = process.hrtime.bigint();
-    for (let i = 0; i < iterations; ++i) body();
-    const elapsedNs = Number(process.hrtime.bigint() - start);
-    if (elapsedNs >= minSeconds * 1e9) return elapsedNs / (iterations * perCall);
-    iterations *= elapsedNs < (minSeconds * 1e9) / 10 ? 10 : 2;
+  let best = Infinity;
+  for (let r = 0; r < repeats; ++r) {
+    let iterations = 1;
+    for (;;) {
+      const start = process.hrtime.bigint();
+      for (let i = 0; i < iterations; ++i) body();
+      const elapsedNs = Number(process.hrtime.bigint() - start);
+      if (elapsedNs >= minSeconds * 1e9) {
+        best = Math.min(best, elapsedNs / (iterations * perCall));
+        break;
+      }
+      iterations *= elapsedNs < (minSeconds * 1e9) / 10 ? 10 : 2;
+    }
   }
+  return best;
 }
 
 export function printResult(name, value, unit) {

@@ -59,6 +59,21 @@ glm::dmat3 axis_rotation(int axis, double angle_rad) {
 // best double-rounded float data (|error| ~ 1e-7 per element), so smaller values carry no
 // information about the split between the first and third angle.
 constexpr double kGimbalLockCos = 1e-7;
+constexpr double kPi = 3.14159265358979323846;
+
+// The decomposition with the first angle fixed to `a`: the middle and third angles follow from
+// M = Ri(-a) * R = Rj(b) * Rk(c) (row j of M is row j of Rk(c); column k is Rj(b) e_k).
+glm::dvec3 decompose_with_first(const glm::dmat3& r, const Axes& x, double a) {
+  const double s = x.parity;
+  const glm::dmat3 m = axis_rotation(x.i, -a) * r;
+  const double c = std::atan2(s * at(m, x.j, x.i), at(m, x.j, x.j));
+  const double b = std::atan2(s * at(m, x.i, x.k), at(m, x.k, x.k));
+  glm::dvec3 angles;
+  angles[x.i] = a;
+  angles[x.j] = b;
+  angles[x.k] = c;
+  return angles;
+}
 
 }  // namespace
 
@@ -125,6 +140,31 @@ glm::dvec3 euler_from_matrix(const glm::dmat3& r, EulerOrder order) {
   angles[x.j] = b;
   angles[x.k] = c;
   return angles;
+}
+
+glm::dvec3 euler_from_quat_near(const glm::dquat& rotation, EulerOrder order, const glm::dvec3& reference) {
+  constexpr double kTwoPi = 6.283185307179586;
+  const Axes x = axes_of(order);
+  const glm::dmat3 r = glm::mat3_cast(glm::normalize(rotation));
+  const auto nearest_turn = [&](double angle, double ref) { return angle + kTwoPi * std::round((ref - angle) / kTwoPi); };
+  const auto shifted = [&](glm::dvec3 angles) {
+    for (int axis = 0; axis < 3; ++axis) angles[axis] = nearest_turn(angles[axis], reference[axis]);
+    return angles;
+  };
+  const glm::dvec3 principal = euler_from_matrix(r, order);
+  const double cos_b = std::cos(principal[x.j]);
+  if (cos_b <= kGimbalLockCos) {
+    // Only the combination of first and third angle is determined: keep the reference's first.
+    return shifted(decompose_with_first(r, x, reference[x.i]));
+  }
+  // Ri(a + pi) Rj(pi - b) Rk(c + pi) = Ri(a) Rj(b) Rk(c), since Ri(pi) Rj(pi - b) Rk(pi) = Rj(b).
+  glm::dvec3 alternative = principal;
+  alternative[x.i] += kPi;
+  alternative[x.j] = kPi - principal[x.j];
+  alternative[x.k] += kPi;
+  const glm::dvec3 first = shifted(principal), second = shifted(alternative);
+  const glm::dvec3 d1 = first - reference, d2 = second - reference;
+  return glm::dot(d1, d1) <= glm::dot(d2, d2) ? first : second;
 }
 
 glm::dvec3 euler_from_quat(const glm::dquat& rotation, EulerOrder order) {

@@ -43,6 +43,13 @@ glm::dquat quat_from_euler(const glm::dvec3& angles_rad, EulerOrder order);
 glm::dvec3 euler_from_matrix(const glm::dmat3& rotation, EulerOrder order);
 glm::dvec3 euler_from_quat(const glm::dquat& rotation, EulerOrder order);
 
+// The decomposition closest to `reference` (e.g. the previous frame's angles): of the two
+// Tait-Bryan solutions (a, b, c) and (a + pi, pi - b, c + pi), each angle shifted by whole turns,
+// the one nearest the reference; at gimbal lock the first angle is the reference's. Angles are then
+// not limited to (-pi, pi]: an animation turning through 180° keeps turning instead of flipping,
+// which BVH players (interpolating angles) need.
+glm::dvec3 euler_from_quat_near(const glm::dquat& rotation, EulerOrder order, const glm::dvec3& reference);
+
 // Single precision: what the runtime (Transform, Clip) stores. Computed in double internally.
 glm::mat3 matrix_from_euler(const glm::vec3& angles_rad, EulerOrder order);
 glm::quat quat_from_euler(const glm::vec3& angles_rad, EulerOrder order);

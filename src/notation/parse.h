@@ -2,6 +2,8 @@
 // notation editor call this and never a format's parser directly.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,6 +21,22 @@ struct ParseOutcome {
 
 // Parse `text` written in `format`. Never throws; malformed input gives diagnostics.
 ParseOutcome parse_notation(std::string_view text, NotationFormat format);
+
+// One sign of a text, parsed on its own (added for the CLI's per-sign report and the server's
+// per-sign import): its gloss, the SignSpec when one could be built (the HamNoSys and SiGML
+// readers recover from some errors and still build one), and its own diagnostics.
+struct SignParse {
+  std::string gloss;
+  std::optional<SignSpec> spec;
+  std::vector<Diagnostic> diagnostics;
+  std::size_t offset = 0;  // byte offset where the sign starts in the text
+  int line = 1;            // its line (1-based)
+  bool ok() const { return spec.has_value() && !has_error(diagnostics); }
+};
+// Every sign of `text` (a formula/HamNoSys file holds one sign a line, `GLOSS = ...`, `#`
+// comments; a SiGML document one per sign element). Diagnostics that belong to no sign (a broken
+// XML document, an empty text) come back as a SignParse without spec.
+std::vector<SignParse> parse_signs(std::string_view text, NotationFormat format);
 // Guess the format from the text (XML root element, private-use code points, "R(" / "L(" ...).
 NotationFormat detect_format(std::string_view text);
 // Canonical names used in the API and the database: "formula", "hamnosys", "hsigml", "gsigml".

@@ -94,12 +94,15 @@ enum class BodyLevel : std::uint8_t {
   NeutralSpace,
 };
 enum class Side : std::uint8_t { RightBeside, Right, Centre, Left, LeftBeside };  // signer's sides
-enum class Contact : std::uint8_t { None, Close, Touch, ArmExtended, Brush, Grasp, Between };
+enum class Contact : std::uint8_t { None, Close, Touch, ArmExtended, Brush, Grasp, Between,
+                                    // HamNoSys haminterlock, hamcross, hambehind:
+                                    Interlock, Cross, Behind };
 
 // Places on the other hand and arm (two-handed contact; HamNoSys location finger / arm-hand).
 enum class HandPlace : std::uint8_t {
   Palm, BackOfHand, ThumbSide, LittleSide, Fingertip, FingerPad, FingerNail, FingerBase,
   FingerMiddleJoint, FingerSide, Wrist, WristBack, Forearm, ForearmBack, Elbow, UpperArm,
+  ThumbBall, ElbowInside,  // HamNoSys hamthumbball, hamelbowinside
 };
 
 struct Location {
@@ -132,6 +135,8 @@ struct Movement {
   Direction direction{};        // straight / arc / zigzag / wavy: the main direction
   Direction arc_bulge{};        // arcs: the side the path bulges to (HamNoSys arc u/d/l/r)
   Direction circle_axis{};      // circles, ellipses, spirals: axis (right-hand rule gives sense)
+  Direction ellipse_axis{};     // ellipses: the long axis in the circle's plane (HamNoSys
+                                // hamellipseh {1,0,0}, v {0,1,0}, ur {-1,1,0}, ul {1,1,0})
   bool clockwise = false;       // as seen by the signer looking along circle_axis
   Size size = Size::Normal;
   Manner manner = Manner::Normal;

@@ -121,7 +121,17 @@ bool local_to_frame(math::Span<const math::Transform> local, double scale_to_m, 
   for (std::size_t i = 0; i < bvh.joints.size(); ++i) {
     const BvhJoint& j = bvh.joints[i];
     const glm::dvec3 position = glm::dvec3(local[i].translation) / scale_to_m;
-    const glm::dvec3 angles_rad = math::euler_from_quat(glm::dquat(local[i].rotation), j.rotation_order());
+    // Continuity with the previous frame: BVH players interpolate angles, so a joint turning past
+    // 180° (or through the middle axis' 90°) must not jump to the other equivalent angle set.
+    glm::dvec3 previous_rad(0.0);
+    if (frame > 0) {
+      const double* before = bvh.frame(frame - 1) + (channel);
+      for (std::size_t c = 0; c < j.channels.size(); ++c) {
+        if (is_rotation(j.channels[c])) previous_rad[axis_of(j.channels[c])] = before[c] / kDegreesPerRadian;
+      }
+    }
+    const glm::dvec3 angles_rad =
+        math::euler_from_quat_near(glm::dquat(local[i].rotation), j.rotation_order(), previous_rad);
     for (BvhChannel c : j.channels) {
       values[channel++] = is_rotation(c) ? angles_rad[axis_of(c)] * kDegreesPerRadian : position[axis_of(c)];
     }

@@ -118,7 +118,8 @@ Skeleton to_skeleton(const Bvh& bvh, double scale_to_m = 1.0, bool include_end_s
 bool frame_to_local(const Bvh& bvh, int frame, double scale_to_m, math::Span<math::Transform> out);
 
 // The inverse: fills one frame's channels from local transforms (translation goes to position
-// channels where the joint has them; rotation to Euler angles in the joint's channel order).
+// channels where the joint has them; rotation to Euler angles in the joint's channel order, chosen
+// nearest the previous frame's angles so that tracks stay continuous — fill frames in order).
 bool local_to_frame(math::Span<const math::Transform> local, double scale_to_m, Bvh& bvh, int frame);
 
 }  // namespace sw::skeleton

@@ -35,9 +35,13 @@ test('node 20 validates the SIMD probe module', () => {
 
 test('loads the SIMD build where SIMD validates', async () => {
   const log = [];
-  const core = await loadCore({ baseUrl, loadScript: nodeScriptLoader(log), moduleArgs: wasmBytes });
-  assert.equal(core.flavour, 'simd');
-  assert.equal(core.simd(), true);
+  const progress = [];
+  const { module, flavour } = await loadCore({
+    baseUrl, loadScript: nodeScriptLoader(log), moduleArgs: wasmBytes, onProgress: (f) => progress.push(f),
+  });
+  assert.equal(flavour, 'simd');
+  assert.equal(module.simd(), true);
+  assert.equal(progress.at(-1), 1, 'progress ends at 1');
   assert.deepEqual(log, ['signweave-simd.js']);
 });
 
@@ -51,16 +55,16 @@ test('falls back to scalar silently when the SIMD build fails to load', async ()
   const info = console.info;
   console.info = () => {};
   try {
-    const core = await loadCore({ baseUrl, loadScript: failingSimd, moduleArgs: wasmBytes });
-    assert.equal(core.flavour, 'scalar');
-    assert.equal(core.simd(), false);
-    assert.deepEqual(core.quatFromEuler(0, 0, 0, 'XYZ'), [1, 0, 0, 0]);
+    const { module, flavour } = await loadCore({ baseUrl, loadScript: failingSimd, moduleArgs: wasmBytes });
+    assert.equal(flavour, 'scalar');
+    assert.equal(module.simd(), false);
+    assert.deepEqual(module.quatFromEuler(0, 0, 0, 'XYZ'), [1, 0, 0, 0]);
   } finally {
     console.info = info;
   }
 });
 
 test('a forced flavour is loaded as asked', async () => {
-  const core = await loadCore({ baseUrl, flavour: 'scalar', loadScript: nodeScriptLoader([]), moduleArgs: wasmBytes });
-  assert.equal(core.flavour, 'scalar');
+  const { flavour } = await loadCore({ baseUrl, flavour: 'scalar', loadScript: nodeScriptLoader([]), moduleArgs: wasmBytes });
+  assert.equal(flavour, 'scalar');
 });

@@ -1,7 +1,8 @@
 // core_loader.js — loads the Signweave WebAssembly core for the page, SIMD where the browser has it.
 //
 //   import { loadCore } from './core_loader.js';
-//   const core = await loadCore();          // core.flavour is 'simd' or 'scalar'
+//   const { module, flavour } = await loadCore({ onProgress: (fraction) => ... });
+//   // module: the instantiated Emscripten module (embind API); flavour: 'simd' or 'scalar'
 //
 // Two builds of the same C++ are served from web/gen/: signweave-simd.{js,wasm} (-msimd128) and
 // signweave-scalar.{js,wasm}. WebAssembly SIMD needs Safari 16.4+ (Chrome 91+, Firefox 89+), so the
@@ -9,7 +10,8 @@
 // instantiate for any reason, falls back to the scalar build silently (a console.info says which).
 //
 // The generated .js is a classic script defining the global factory createSignweave (Emscripten
-// MODULARIZE), so it is added with a <script> tag (importScripts in a worker).
+// MODULARIZE), so it is added with a <script> tag (importScripts in a worker). The .wasm is fetched
+// here rather than by Emscripten so that its download can be reported to onProgress.
 //
 // Does not: cache across page loads (the HTTP cache does), or load both flavours at once (they
 // define the same global).
@@ -52,38 +54,68 @@ export function loadClassicScript(url) {
   });
 }
 
-async function instantiate(flavour, baseUrl, loadScript, moduleArgs) {
+// Downloads the .wasm, reporting the fraction received (0..1) when the server sends its length.
+async function fetchWasm(url, onProgress) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+  const total = Number(response.headers.get('content-length')) || 0;
+  if (!response.body || !total) {
+    const bytes = new Uint8Array(await response.arrayBuffer());
+    onProgress(1);
+    return bytes;
+  }
+  const bytes = new Uint8Array(total);
+  const reader = response.body.getReader();
+  let received = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    if (received + value.length > total) throw new Error(`${url}: more bytes than its content-length`);
+    bytes.set(value, received);
+    received += value.length;
+    onProgress(received / total);
+  }
+  if (received !== total) throw new Error(`${url}: ${received} of ${total} bytes received`);
+  return bytes;
+}
+
+async function instantiate(flavour, baseUrl, loadScript, moduleArgs, onProgress) {
   const jsUrl = new URL(`signweave-${flavour}.js`, baseUrl).href;
+  const extra = typeof moduleArgs === 'function' ? moduleArgs(flavour) : moduleArgs;
+  const wasmBinary = extra.wasmBinary ?? (await fetchWasm(new URL(`signweave-${flavour}.wasm`, baseUrl).href, onProgress));
   delete globalThis.createSignweave;
   await loadScript(jsUrl);
   const factory = globalThis.createSignweave;
   if (typeof factory !== 'function') throw new Error(`${jsUrl} did not define createSignweave`);
-  const extra = typeof moduleArgs === 'function' ? moduleArgs(flavour) : moduleArgs;
   const module = await factory({
-    // The .wasm sits beside its .js; resolve it against baseUrl, not the page.
+    // Anything else the module looks up sits beside its .js: resolve against baseUrl, not the page.
     locateFile: (file) => new URL(file, baseUrl).href,
     ...extra,
+    wasmBinary,
   });
-  module.flavour = flavour;
-  return module;
+  onProgress(1);
+  return { module, flavour };
 }
 
-// Options (all optional):
+// Resolves to { module, flavour }. Options (all optional):
 //   baseUrl     where signweave-*.{js,wasm} are served; default: ../gen/ relative to this file
 //   flavour     'simd' or 'scalar' to force one (tests); default: detect
+//   onProgress  fraction (0..1) of the .wasm download, for a loading bar
 //   loadScript  url -> Promise, to load the classic script (default: <script> tag)
 //   moduleArgs  extra arguments for the Emscripten factory, or a function flavour -> arguments
+//               (a wasmBinary there skips the download: node tests pass the file's bytes)
 export async function loadCore(options = {}) {
   const baseUrl = options.baseUrl ?? new URL('../gen/', import.meta.url).href;
   const loadScript = options.loadScript ?? loadClassicScript;
   const moduleArgs = options.moduleArgs ?? {};
-  if (options.flavour) return instantiate(options.flavour, baseUrl, loadScript, moduleArgs);
+  const onProgress = options.onProgress ?? (() => {});
+  if (options.flavour) return instantiate(options.flavour, baseUrl, loadScript, moduleArgs, onProgress);
   if (simdSupported()) {
     try {
-      return await instantiate('simd', baseUrl, loadScript, moduleArgs);
+      return await instantiate('simd', baseUrl, loadScript, moduleArgs, onProgress);
     } catch (error) {
       console.info('signweave: SIMD core unavailable, using the scalar build:', error.message);
     }
   }
-  return instantiate('scalar', baseUrl, loadScript, moduleArgs);
+  return instantiate('scalar', baseUrl, loadScript, moduleArgs, onProgress);
 }

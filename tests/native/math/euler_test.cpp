@@ -169,5 +169,62 @@ TEST(EulerFromQuat, UnnormalisedQuaternionIsNormalisedFirst) {
   EXPECT_LT(glm::length(euler_from_quat(q, EulerOrder::ZXY) - a), 1e-12);
 }
 
+TEST(EulerNear, ReproducesTheRotationAndStaysWithinHalfATurnOfTheReference) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> angle(-kPi, kPi), far(-20.0, 20.0);
+  for (EulerOrder order : kAllEulerOrders) {
+    for (int i = 0; i < 2000; ++i) {
+      const glm::dquat q = quat_from_euler(glm::dvec3(angle(rng), angle(rng), angle(rng)), order);
+      const glm::dvec3 reference(far(rng), far(rng), far(rng));
+      const glm::dvec3 near = euler_from_quat_near(q, order, reference);
+      EXPECT_LT(quat_distance(q, quat_from_euler(near, order)), 1e-9) << euler_order_name(order);
+      for (int axis = 0; axis < 3; ++axis) EXPECT_LE(std::fabs(near[axis] - reference[axis]), kPi + 1e-9);
+    }
+  }
+}
+
+TEST(EulerNear, ReferenceEqualToASolutionReturnsIt) {
+  // Angles outside the principal range (middle beyond 90°, outer beyond 180°) come back unchanged.
+  const glm::dvec3 a(4.0, 2.0, -3.5);
+  for (EulerOrder order : kAllEulerOrders) {
+    const glm::dvec3 back = euler_from_quat_near(quat_from_euler(a, order), order, a);
+    EXPECT_LT(glm::length(back - a), 1e-9) << euler_order_name(order);
+  }
+}
+
+TEST(EulerNear, SmoothMotionGivesContinuousAngles) {
+  // What BVH export needs: a joint spinning two full turns, and one bending through the middle
+  // axis' 90° (where the principal decomposition flips), give angle tracks without jumps.
+  for (EulerOrder order : kAllEulerOrders) {
+    glm::dvec3 previous(0.0);
+    for (int step = 0; step <= 720; ++step) {
+      glm::dvec3 a;
+      a[euler_axis(order, 0)] = 0.3;
+      a[euler_axis(order, 1)] = 0.005 * step;  // 0 .. 3.6 rad, through pi/2
+      a[euler_axis(order, 2)] = 0.02 * step;   // two turns and more
+      const glm::dquat q = quat_from_euler(a, order);
+      const glm::dvec3 now = euler_from_quat_near(q, order, previous);
+      if (step > 0) {
+        EXPECT_LT(glm::length(now - previous), 0.05) << euler_order_name(order) << " step " << step;
+      }
+      EXPECT_LT(quat_distance(q, quat_from_euler(now, order)), 1e-9);
+      previous = now;
+    }
+  }
+}
+
+TEST(EulerNear, AtGimbalLockKeepsTheReferenceFirstAngle) {
+  for (EulerOrder order : kAllEulerOrders) {
+    glm::dvec3 a;
+    a[euler_axis(order, 0)] = 0.7;
+    a[euler_axis(order, 1)] = kPi / 2;
+    a[euler_axis(order, 2)] = -0.4;
+    const glm::dquat q = quat_from_euler(a, order);
+    const glm::dvec3 near = euler_from_quat_near(q, order, a);
+    EXPECT_NEAR(near[euler_axis(order, 0)], 0.7, 1e-9);
+    EXPECT_LT(glm::length(near - a), 1e-6) << euler_order_name(order);
+  }
+}
+
 }  // namespace
 }  // namespace sw::math

@@ -179,6 +179,23 @@ TEST(BvhRoundTrip, LocalTransformsThroughChannelsAndBack) {
   }
 }
 
+TEST(BvhRoundTrip, ExportedAngleTracksAreContinuous) {
+  // A joint turning from 170° to 190° about Z is written as 170, 190 — not 170, -170, which a BVH
+  // player would interpolate the long way round.
+  Bvh bvh = read_ok(kArm);
+  bvh.frame_count = 2;
+  bvh.values.assign(2u * 15u, 0.0);
+  std::vector<math::Transform> local(bvh.joints.size());
+  const int arm = bvh.find("RightArm");  // channels Xrotation Yrotation Zrotation
+  for (int f = 0; f < 2; ++f) {
+    local[static_cast<std::size_t>(arm)].rotation = glm::angleAxis(glm::radians(f == 0 ? 170.0f : 190.0f), glm::vec3(0, 0, 1));
+    ASSERT_TRUE(local_to_frame(local, 0.01, bvh, f));
+  }
+  const int z = bvh.channel_offset(arm) + 2;
+  EXPECT_NEAR(bvh.frame(0)[z], 170.0, 1e-4);
+  EXPECT_NEAR(bvh.frame(1)[z], 190.0, 1e-4);
+}
+
 TEST(BvhWrite, NonDepthFirstArrayIsWrittenInFileOrder) {
   // Joints stored breadth first: the writer emits depth first and permutes the frame values to match.
   Bvh bvh;
@@ -320,6 +337,32 @@ TEST(BvhMalformed, RandomByteMutationsNeverCrash) {
       EXPECT_EQ(r.bvh.values.size(), std::size_t(r.bvh.frame_count) * std::size_t(r.bvh.channel_count()));
     }
   }
+}
+
+std::string nested_chain(int depth) {
+  std::string text = "HIERARCHY\n";
+  for (int i = 0; i < depth; ++i) {
+    text += (i == 0 ? "ROOT j" : "JOINT j") + std::to_string(i) + "\n{\nOFFSET 0 1 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n";
+  }
+  for (int i = 0; i < depth; ++i) text += "}\n";
+  text += "MOTION\nFrames: 1\nFrame Time: 0.1\n";
+  for (int i = 0; i < depth; ++i) text += "0 0 0 ";
+  return text + "\n";
+}
+
+TEST(BvhLimits, DeepChainUpToTheJointLimitParses) {
+  // 1024 nested joints: the recursive parser's depth is bounded by the joint limit.
+  const BvhReadResult r = read_bvh(nested_chain(Bvh::kMaxJoints));
+  ASSERT_TRUE(r.ok) << r.error.format();
+  EXPECT_EQ(r.bvh.joints.size(), std::size_t(Bvh::kMaxJoints));
+  EXPECT_EQ(r.bvh.joints.back().parent, Bvh::kMaxJoints - 2);
+}
+
+TEST(BvhLimits, OneJointMoreIsRefusedWithItsLine) {
+  const BvhReadResult r = read_bvh(nested_chain(Bvh::kMaxJoints + 1));
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.error.line, 2 + 4 * Bvh::kMaxJoints);  // the name of joint 1025
+  EXPECT_NE(r.error.message.find("more than 1024 joints"), std::string::npos) << r.error.format();
 }
 
 TEST(BvhMalformed, ErrorFormatsWithLine) {
