@@ -5,6 +5,7 @@
 
 #include "notation/formula.h"
 #include "notation/hamnosys.h"
+#include "notation/hamnosys_places.h"
 #include "notation/hamnosys_symbols.h"
 #include "notation/handshape.h"
 #include "notation/text_position.h"
@@ -52,63 +53,8 @@ bool is_movement_modifier(char32_t c) {
          c == hamalternatingmotion;
 }
 
-BodyLevel level_of(char32_t c) {
-  switch (c) {
-    case hamhead: return BodyLevel::Head;
-    case hamheadtop: return BodyLevel::HeadTop;
-    case hamforehead: return BodyLevel::Forehead;
-    case hameyebrows: return BodyLevel::Eyebrows;
-    case hameyes: return BodyLevel::Eyes;
-    case hamnose: case hamnostrils: return BodyLevel::Nose;
-    case hamear: case hamearlobe: return BodyLevel::Ears;
-    case hamcheek: return BodyLevel::Cheeks;
-    case hamlips: return BodyLevel::Lips;
-    case hamtongue: return BodyLevel::Tongue;
-    case hamteeth: return BodyLevel::Teeth;
-    case hamchin: return BodyLevel::Chin;
-    case hamunderchin: return BodyLevel::UnderChin;
-    case hamneck: return BodyLevel::Neck;
-    case hamshouldertop: return BodyLevel::ShoulderTop;
-    case hamshoulders: return BodyLevel::Shoulders;
-    case hamchest: return BodyLevel::Chest;
-    case hamstomach: return BodyLevel::Stomach;
-    default: return BodyLevel::Belly;  // hambelowstomach
-  }
-}
 
-HandPlace place_of(char32_t c) {
-  switch (c) {
-    case hamupperarm: return HandPlace::UpperArm;
-    case hamelbow: return HandPlace::Elbow;
-    case hamelbowinside: return HandPlace::ElbowInside;
-    case hamlowerarm: return HandPlace::Forearm;
-    case hamwristback: case hamwristtoback: return HandPlace::WristBack;
-    case hamwristpulse: case hamwristtopulse: return HandPlace::Wrist;
-    case hamthumbball: return HandPlace::ThumbBall;
-    case hampalm: return HandPlace::Palm;
-    case hamhandback: return HandPlace::BackOfHand;
-    case hamthumbside: case hamwristtothumb: return HandPlace::ThumbSide;
-    case hampinkyside: case hamwristtopinky: return HandPlace::LittleSide;
-    case hamfingertip: return HandPlace::Fingertip;
-    case hamfingernail: return HandPlace::FingerNail;
-    case hamfingerpad: return HandPlace::FingerPad;
-    case hamfingermidjoint: return HandPlace::FingerMiddleJoint;
-    case hamfingerbase: return HandPlace::FingerBase;
-    default: return HandPlace::FingerSide;  // hamfingerside
-  }
-}
 
-Contact contact_of(char32_t c) {
-  switch (c) {
-    case hamclose: return Contact::Close;
-    case hamtouch: return Contact::Touch;
-    case haminterlock: return Contact::Interlock;
-    case hamcross: return Contact::Cross;
-    case hamarmextended: return Contact::ArmExtended;
-    case hambehind: return Contact::Behind;
-    default: return Contact::Brush;  // hambrushing
-  }
-}
 
 bool operator!=(const Orientation& a, const Orientation& b) {
   return a.extended_finger != b.extended_finger || a.palm != b.palm || a.seed_palm != b.seed_palm;
@@ -130,6 +76,7 @@ class Reader {
   }
 
   bool read(SignSpec* sign) {
+    if (too_deep_) return false;
     std::size_t i = 0;
     const std::size_t end = s_.size();
     // Prefix: two-handed operators and a pending alternation.
@@ -253,6 +200,12 @@ class Reader {
     for (std::size_t i = 0; i < s_.size(); ++i) {
       const char32_t c = s_[i].code;
       if (closer_of(c)) {
+        if (open.size() >= kMaxGroupDepth) {
+          error(i, "groups nest deeper than " + std::to_string(kMaxGroupDepth) +
+                       " levels (the reader's limit; real signs nest fewer than 5)");
+          too_deep_ = true;
+          return;
+        }
         open.push_back(i);
       } else if (is_closer(c)) {
         if (!open.empty() && closer_of(s_[open.back()].code) == c) {
@@ -833,6 +786,10 @@ class Reader {
   std::vector<Diagnostic>* diags_;
   std::vector<std::size_t> match_;
   std::vector<bool> skip_;
+  // The reader recurses once per group level: the limit keeps hostile input from exhausting the
+  // stack (WASM's is small).
+  static constexpr std::size_t kMaxGroupDepth = 32;
+  bool too_deep_ = false;
   bool alternate_all_ = false;
   bool reading_nondominant_ = false;  // inside the part after hamplus of an action group
   HandSpec initial_dominant_, initial_nondominant_;

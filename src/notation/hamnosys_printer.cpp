@@ -9,6 +9,7 @@
 
 #include "notation/formula.h"
 #include "notation/hamnosys.h"
+#include "notation/hamnosys_places.h"
 #include "notation/hamnosys_symbols.h"
 #include "notation/handshape.h"
 #include "notation/text_position.h"
@@ -17,16 +18,6 @@ namespace sw::notation {
 namespace {
 
 using Symbols = std::vector<char32_t>;
-
-bool same_finger(const FingerConfig& a, const FingerConfig& b) {
-  return a.id == b.id && a.has_t == b.has_t && a.t == b.t && a.spread == b.spread;
-}
-bool same_fingers(const HandShape& a, const HandShape& b) {
-  for (int k = 0; k < kFingerCount; ++k) {
-    if (!same_finger(a.fingers[k], b.fingers[k])) return false;
-  }
-  return true;
-}
 
 // The symbol "<prefix><direction word>", or for a direction the group lacks, the nearest one
 // the group has (dropping the left/right, then the in/out component).
@@ -62,51 +53,13 @@ Symbols direction_symbols(std::string_view prefix, const Direction& d, bool with
   return {};
 }
 
-// The handshape's words: its own (when they still build these fingers) or the closest base +
-// thumb + bending combination.
-Symbols shape_symbols(const HandShape& shape) {
-  Symbols words;
-  if (!shape.hamnosys_base.empty() && split_shape_words(shape.hamnosys_base, &words)) {
-    HandShape built;
-    ShapeError error;
-    bool only_ham = true;
-    for (char32_t w : words) only_ham = only_ham && ham_symbol_by_code(w) != nullptr;
-    if (only_ham && build_handshape(words, &built, &error) && same_fingers(built, shape)) return words;
-  }
-  Symbols best;
-  int best_score = -1;
-  const char32_t thumbs[] = {0, hamthumboutmod, hamthumbacrossmod, hamthumbopenmod};
-  const char32_t bends[] = {0, hamfingerstraightmod, hamfingerbendmod, hamfingerhookmod,
-                            hamdoublebent, hamdoublehooked};
-  for (char32_t base = hamfist; base <= hamceeopen; ++base) {
-    for (char32_t thumb : thumbs) {
-      for (char32_t bend : bends) {
-        Symbols candidate{base};
-        if (thumb) candidate.push_back(thumb);
-        if (bend) candidate.push_back(bend);
-        HandShape built;
-        ShapeError error;
-        if (!build_handshape(candidate, &built, &error)) continue;
-        int score = 0;
-        for (int k = 0; k < kFingerCount; ++k) {
-          const FingerConfig& a = built.fingers[k];
-          const FingerConfig& b = shape.fingers[k];
-          score += (a.id == b.id ? 2 : 0) + (std::abs(a.t - b.t) < 0.26f ? 1 : 0);
-        }
-        if (score > best_score) best_score = score, best = candidate;
-      }
-    }
-  }
-  return best;
-}
-
 void append(Symbols* out, const Symbols& more) { out->insert(out->end(), more.begin(), more.end()); }
 
 // handshape [extfidir] [palm]; orientation parts equal to `reference` are left out (the reader
 // starts from the same reference).
 Symbols hand_symbols(const HandSpec& hand, const Orientation& reference, bool with_shape) {
   Symbols out;
-  if (with_shape) append(&out, shape_symbols(hand.shape));
+  if (with_shape) append(&out, handshape_words(hand.shape));
   if (hand.orientation.extended_finger != reference.extended_finger) {
     append(&out, direction_symbols("hamextfinger", hand.orientation.extended_finger, false));
   }
@@ -116,68 +69,8 @@ Symbols hand_symbols(const HandSpec& hand, const Orientation& reference, bool wi
   return out;
 }
 
-char32_t level_symbol(BodyLevel level) {
-  switch (level) {
-    case BodyLevel::AboveHead: case BodyLevel::HeadTop: return hamheadtop;
-    case BodyLevel::Head: return hamhead;
-    case BodyLevel::Forehead: return hamforehead;
-    case BodyLevel::Eyebrows: return hameyebrows;
-    case BodyLevel::Eyes: return hameyes;
-    case BodyLevel::Nose: return hamnose;
-    case BodyLevel::Ears: return hamear;
-    case BodyLevel::Cheeks: return hamcheek;
-    case BodyLevel::Mouth: case BodyLevel::Lips: return hamlips;
-    case BodyLevel::Teeth: return hamteeth;
-    case BodyLevel::Tongue: return hamtongue;
-    case BodyLevel::Chin: return hamchin;
-    case BodyLevel::UnderChin: return hamunderchin;
-    case BodyLevel::Neck: return hamneck;
-    case BodyLevel::Shoulders: return hamshoulders;
-    case BodyLevel::ShoulderTop: return hamshouldertop;
-    case BodyLevel::Chest: return hamchest;
-    case BodyLevel::Stomach: case BodyLevel::Waist: return hamstomach;
-    case BodyLevel::Belly: case BodyLevel::BelowWaist: return hambelowstomach;
-    case BodyLevel::NeutralSpace: return hamneutralspace;
-  }
-  return hamneutralspace;
-}
 
-char32_t place_symbol(HandPlace p) {
-  switch (p) {
-    case HandPlace::Palm: return hampalm;
-    case HandPlace::BackOfHand: return hamhandback;
-    case HandPlace::ThumbSide: return hamthumbside;
-    case HandPlace::LittleSide: return hampinkyside;
-    case HandPlace::Fingertip: return hamfingertip;
-    case HandPlace::FingerPad: return hamfingerpad;
-    case HandPlace::FingerNail: return hamfingernail;
-    case HandPlace::FingerBase: return hamfingerbase;
-    case HandPlace::FingerMiddleJoint: return hamfingermidjoint;
-    case HandPlace::FingerSide: return hamfingerside;
-    case HandPlace::Wrist: return hamwristpulse;
-    case HandPlace::WristBack: return hamwristback;
-    case HandPlace::Forearm: case HandPlace::ForearmBack: return hamlowerarm;
-    case HandPlace::Elbow: return hamelbow;
-    case HandPlace::UpperArm: return hamupperarm;
-    case HandPlace::ThumbBall: return hamthumbball;
-    case HandPlace::ElbowInside: return hamelbowinside;
-  }
-  return hampalm;
-}
 
-char32_t contact_symbol(Contact c) {
-  switch (c) {
-    case Contact::Close: return hamclose;
-    case Contact::Touch: case Contact::Grasp: case Contact::Between: return hamtouch;
-    case Contact::ArmExtended: return hamarmextended;
-    case Contact::Brush: return hambrushing;
-    case Contact::Interlock: return haminterlock;
-    case Contact::Cross: return hamcross;
-    case Contact::Behind: return hambehind;
-    case Contact::None: return 0;
-  }
-  return 0;
-}
 
 // A place on a hand: [digit] part (a fingertip of a named finger is written as the digit alone
 // when that reads back the same).

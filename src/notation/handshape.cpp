@@ -6,6 +6,7 @@
 #include "notation/handshape.h"
 
 #include <array>
+#include <cmath>
 #include <cstring>
 
 #include "notation/hamnosys_symbols.h"
@@ -306,6 +307,57 @@ bool build_handshape(const std::vector<char32_t>& words, HandShape* shape, Shape
   shape->hamnosys_base = join_shape_words(words);
   return true;
 }
+
+namespace {
+bool same_finger(const FingerConfig& a, const FingerConfig& b) {
+  return a.id == b.id && a.has_t == b.has_t && a.t == b.t && a.spread == b.spread;
+}
+bool same_fingers(const HandShape& a, const HandShape& b) {
+  for (int k = 0; k < kFingerCount; ++k) {
+    if (!same_finger(a.fingers[k], b.fingers[k])) return false;
+  }
+  return true;
+}
+}  // namespace
+
+// The handshape's words: its own (when they still build these fingers) or the closest base +
+// thumb + bending combination.
+std::vector<char32_t> handshape_words(const HandShape& shape) {
+  std::vector<char32_t> words;
+  if (!shape.hamnosys_base.empty() && split_shape_words(shape.hamnosys_base, &words)) {
+    HandShape built;
+    ShapeError error;
+    bool only_ham = true;
+    for (char32_t w : words) only_ham = only_ham && ham_symbol_by_code(w) != nullptr;
+    if (only_ham && build_handshape(words, &built, &error) && same_fingers(built, shape)) return words;
+  }
+  std::vector<char32_t> best;
+  int best_score = -1;
+  const char32_t thumbs[] = {0, hamthumboutmod, hamthumbacrossmod, hamthumbopenmod};
+  const char32_t bends[] = {0, hamfingerstraightmod, hamfingerbendmod, hamfingerhookmod,
+                            hamdoublebent, hamdoublehooked};
+  for (char32_t base = hamfist; base <= hamceeopen; ++base) {
+    for (char32_t thumb : thumbs) {
+      for (char32_t bend : bends) {
+        std::vector<char32_t> candidate{base};
+        if (thumb) candidate.push_back(thumb);
+        if (bend) candidate.push_back(bend);
+        HandShape built;
+        ShapeError error;
+        if (!build_handshape(candidate, &built, &error)) continue;
+        int score = 0;
+        for (int k = 0; k < kFingerCount; ++k) {
+          const FingerConfig& a = built.fingers[k];
+          const FingerConfig& b = shape.fingers[k];
+          score += (a.id == b.id ? 2 : 0) + (std::abs(a.t - b.t) < 0.26f ? 1 : 0);
+        }
+        if (score > best_score) best_score = score, best = candidate;
+      }
+    }
+  }
+  return best;
+}
+
 
 std::string join_shape_words(const std::vector<char32_t>& words) {
   std::string out;

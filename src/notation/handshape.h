@@ -54,6 +54,11 @@ struct ShapeError {
 // otherwise returns false and says which word was wrong.
 bool build_handshape(const std::vector<char32_t>& words, HandShape* shape, ShapeError* error);
 
+// The words of a handshape for printing: its own (HandShape::hamnosys_base, when they are all
+// HamNoSys symbols and still build these fingers) or else the base + thumb + bending combination
+// whose fingers come closest (formula shapes written with F items).
+std::vector<char32_t> handshape_words(const HandShape& shape);
+
 // Joins/splits the names stored in HandShape::hamnosys_base.
 std::string join_shape_words(const std::vector<char32_t>& words);
 bool split_shape_words(std::string_view text, std::vector<char32_t>* words);

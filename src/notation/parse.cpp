@@ -4,6 +4,7 @@
 
 #include "notation/formula.h"
 #include "notation/hamnosys.h"
+#include "notation/sigml.h"
 #include "notation/text_position.h"
 
 namespace sw::notation {
@@ -78,16 +79,33 @@ std::vector<SignParse> parse_signs(std::string_view text, NotationFormat format)
       return parse_formula_text(text);
     case NotationFormat::HamNoSys:
       return parse_hamnosys_text(text);
-    default: {
-      SignParse none;
-      const LineIndex index(text);
-      none.diagnostics.push_back(index.make(0, 0, format_name(format),
-                                            std::string("expected a notation this build reads "
-                                                        "(formula, hamnosys), found '") +
-                                                format_name(format) + "'"));
-      return {none};
-    }
+    case NotationFormat::HSiGML:
+    case NotationFormat::GSiGML:
+      // One reader for both: a SiGML document may mix hns_sign and hamgestural_sign.
+      return parse_sigml_text(text);
   }
+  return {};
+}
+
+std::string print_notation(const std::vector<SignSpec>& signs, NotationFormat format) {
+  switch (format) {
+    case NotationFormat::HSiGML: return print_hsigml(signs);
+    case NotationFormat::GSiGML: return print_gsigml(signs);
+    case NotationFormat::Formula:
+    case NotationFormat::HamNoSys: break;
+  }
+  std::string out;
+  for (const SignSpec& s : signs) {
+    if (format == NotationFormat::Formula) {
+      out += print_formula_line(s);
+    } else {
+      std::string gloss;
+      for (char c : s.gloss) gloss += (c == '=' || c == '#' || c == '\n' || c == '\r') ? '_' : c;
+      out += (gloss.empty() ? "" : gloss + " = ") + print_hamnosys(s, HamNoSysSpelling::Unicode);
+    }
+    out += '\n';
+  }
+  return out;
 }
 
 ParseOutcome parse_notation(std::string_view text, NotationFormat format) {

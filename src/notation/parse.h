@@ -37,6 +37,10 @@ struct SignParse {
 // comments; a SiGML document one per sign element). Diagnostics that belong to no sign (a broken
 // XML document, an empty text) come back as a SignParse without spec.
 std::vector<SignParse> parse_signs(std::string_view text, NotationFormat format);
+
+// Writes signs in `format` (added with the printers): formula and HamNoSys as one line per sign
+// (`GLOSS = ...`; HamNoSys as Unicode code points), SiGML as one <sigml> document.
+std::string print_notation(const std::vector<SignSpec>& signs, NotationFormat format);
 // Guess the format from the text (XML root element, private-use code points, "R(" / "L(" ...).
 NotationFormat detect_format(std::string_view text);
 // Canonical names used in the API and the database: "formula", "hamnosys", "hsigml", "gsigml".

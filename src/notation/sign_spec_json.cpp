@@ -326,4 +326,20 @@ json diagnostics_to_json(const std::vector<Diagnostic>& diagnostics) {
   return out;
 }
 
+json parse_result_to_json(const std::vector<SignParse>& signs, NotationFormat format) {
+  json list = json::array();
+  json all = json::array();
+  bool ok = !signs.empty();
+  for (const SignParse& s : signs) {
+    list.push_back({{"gloss", s.gloss},
+                    {"line", s.line},
+                    {"ok", s.ok()},
+                    {"spec", s.spec ? sign_to_json(*s.spec) : json(nullptr)},
+                    {"diagnostics", diagnostics_to_json(s.diagnostics)}});
+    for (const Diagnostic& d : s.diagnostics) all.push_back(diagnostic_to_json(d));
+    ok = ok && s.ok();
+  }
+  return {{"format", format_name(format)}, {"ok", ok}, {"signs", list}, {"diagnostics", all}};
+}
+
 }  // namespace sw::notation

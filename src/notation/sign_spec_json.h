@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "notation/diagnostic.h"
+#include "notation/parse.h"
 #include "notation/sign_spec.h"
 
 namespace sw::notation {
@@ -26,5 +27,10 @@ bool sign_from_json_text(std::string_view text, SignSpec* sign, std::string* err
 // {"severity":"error","line":..,"column":..,"offset":..,"length":..,"symbol":..,"message":..}
 nlohmann::json diagnostic_to_json(const Diagnostic& d);
 nlohmann::json diagnostics_to_json(const std::vector<Diagnostic>& diagnostics);
+
+// The result of parsing a text, as the WASM API and the server hand it on:
+// {"format": .., "ok": .., "signs": [{"gloss", "line", "ok", "spec": {...}|null,
+//  "diagnostics": [...]}], "diagnostics": [every diagnostic, for the editor's underlines]}.
+nlohmann::json parse_result_to_json(const std::vector<SignParse>& signs, NotationFormat format);
 
 }  // namespace sw::notation
