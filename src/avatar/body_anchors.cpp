@@ -562,6 +562,10 @@ std::string hand_anchor_name(bool left, notation::HandPlace place, notation::Fin
     case HandPlace::ForearmBack: return "arm/" + side + "/forearm_back";
     case HandPlace::Elbow: return "arm/" + side + "/elbow";
     case HandPlace::UpperArm: return "arm/" + side + "/upper_arm";
+    // Added when notation's HamNoSys places (hamthumbball, hamelbowinside) met this switch in the
+    // synthesis branch: the nearest anchors until avatar-runtime names these places itself.
+    case HandPlace::ThumbBall: return "hand/" + side + "/thumb_side";
+    case HandPlace::ElbowInside: return "arm/" + side + "/elbow";
   }
   return "hand/" + side + "/palm";
 }

@@ -159,6 +159,13 @@ Penetration hand_penetration(const BodyModel& body, const PoseBuilder& pose, Sid
   Penetration worst;
   Sphere mine[24];
   int n = hand_spheres(body, pose, side, mine);
+  // Bounding sphere of the hand: capsules and the other hand farther than that are skipped
+  // (most frames of most signs touch nothing; this keeps the per-frame check cheap).
+  glm::vec3 centre(0.0f);
+  for (int i = 0; i < n; ++i) centre += mine[i].c;
+  centre /= static_cast<float>(n);
+  float bound = 0.0f;
+  for (int i = 0; i < n; ++i) bound = std::max(bound, glm::length(mine[i].c - centre) + mine[i].r);
   auto consider = [&](const Sphere& s, const glm::vec3& a, const glm::vec3& b, float r,
                       const std::string& what) {
     glm::vec3 q = closest_on_segment(s.c, a, b);
@@ -173,18 +180,22 @@ Penetration hand_penetration(const BodyModel& body, const PoseBuilder& pose, Sid
   if (check_trunk) {
     for (const Capsule& c : body.trunk) {
       glm::vec3 a = pose.attached(c.joint, c.a), b = pose.attached(c.joint, c.b);
+      if (segment_distance(centre, a, b) > bound + c.radius_m) continue;
       for (int i = 0; i < n; ++i) consider(mine[i], a, b, c.radius_m, c.name);
     }
   }
   if (check_other_hand) {
     Side o = other(side);
-    Sphere theirs[24];
-    int m = hand_spheres(body, pose, o, theirs);
     const Capsule& fc = body.forearm[o];
     glm::vec3 fa = pose.attached(fc.joint, fc.a), fb = pose.attached(fc.joint, fc.b);
-    for (int i = 0; i < n; ++i) {
-      consider(mine[i], fa, fb, fc.radius_m, fc.name);
-      for (int j = 0; j < m; ++j) consider(mine[i], theirs[j].c, theirs[j].c, theirs[j].r, "other hand");
+    if (segment_distance(centre, fa, fb) <= bound + fc.radius_m)
+      for (int i = 0; i < n; ++i) consider(mine[i], fa, fb, fc.radius_m, fc.name);
+    glm::vec3 other_palm = pose.attached(pose.rig->arms[o].hand, bind_palm_centre(*pose.rig, o));
+    if (glm::length(other_palm - centre) <= bound + 0.25f) {  // 0.25 m: more than a hand's reach
+      Sphere theirs[24];
+      int m = hand_spheres(body, pose, o, theirs);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) consider(mine[i], theirs[j].c, theirs[j].c, theirs[j].r, "other hand");
     }
   }
   return worst;

@@ -48,6 +48,15 @@ PartPoint hand_part(const PoseBuilder& pose, Side side, HandPlace place, int fin
       glm::vec3 outward = -safe_normalize(back + safe_normalize(forearm_axis, rig.up), rig.up);
       return {pose.position(a.lower) + forearm_r * outward, outward};
     }
+    case HandPlace::ThumbBall: {  // the thenar eminence: palm side of the thumb's metacarpal
+      glm::vec3 base = pose.position(a.fingers[0].bones[0]);
+      glm::vec3 mid = 0.5f * (base + pose.position(a.fingers[0].bones[1]));
+      return {mid + half_thick * n, n};
+    }
+    case HandPlace::ElbowInside: {  // the crook of the elbow, on the flexion side
+      glm::vec3 inside = safe_normalize(reject(fn, safe_normalize(forearm_axis, rig.up)), rig.forward);
+      return {pose.position(a.lower) + forearm_r * inside, inside};
+    }
     case HandPlace::UpperArm: {
       glm::vec3 out = side == kLeft ? rig.left : -rig.left;
       glm::vec3 mid = 0.5f * (pose.position(a.upper) + pose.position(a.lower));
@@ -78,6 +87,8 @@ std::string hand_part_anchor_name(Side side, HandPlace place, int finger) {
     case HandPlace::ForearmBack: return "arm/" + s + "/forearm_back";
     case HandPlace::Elbow: return "arm/" + s + "/elbow";
     case HandPlace::UpperArm: return "arm/" + s + "/upper_arm";
+    case HandPlace::ThumbBall: return "hand/" + s + "/thumb_ball";
+    case HandPlace::ElbowInside: return "arm/" + s + "/elbow_inside";
   }
   return "hand/" + s + "/palm";
 }

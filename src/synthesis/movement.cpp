@@ -107,6 +107,10 @@ glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const Mir
       glm::vec3 axis = mirrored_direction(rig, m.circle_axis, mirror);
       if (glm::length(axis) < 0.5f) axis = rig.forward;
       glm::vec3 e1 = perpendicular(rig, axis);
+      if (m.kind == MovementKind::Ellipse) {  // the long axis as written, in the circle's plane
+        glm::vec3 longer = reject(mirrored_direction(rig, m.ellipse_axis, mirror), axis);
+        if (glm::length(longer) > 0.2f) e1 = glm::normalize(longer);
+      }
       glm::vec3 e2 = glm::cross(axis, e1);
       // Looking along the axis, a positive (right-hand) rotation appears clockwise; a mirror image
       // turns the other way.

@@ -53,8 +53,8 @@ glm::quat slerp_shortest(const glm::quat& a, const glm::quat& b_in, float t) {
 }
 
 float rotation_angle(const glm::quat& q) {
-  float w = std::min(1.0f, std::fabs(q.w));
-  return 2.0f * std::acos(w);
+  // atan2 keeps full precision near zero, where 2 acos(w) has a 7e-4 rad floor in float.
+  return 2.0f * std::atan2(glm::length(glm::vec3(q.x, q.y, q.z)), std::fabs(q.w));
 }
 
 int find_canonical_joint(const avatar::Avatar& avatar, const std::string& canonical_name) {

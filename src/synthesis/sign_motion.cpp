@@ -39,15 +39,16 @@ const char* side_name(notation::Side s) {
 }
 
 bool is_touch(Contact c) {
-  return c == Contact::Touch || c == Contact::Brush || c == Contact::Grasp || c == Contact::Between;
+  return c == Contact::Touch || c == Contact::Brush || c == Contact::Grasp ||
+         c == Contact::Between || c == Contact::Interlock;
 }
 
-// How far the contact part stays from the place (m): touch 0, close 5 cm, none 8 cm — the
+// How far the contact part stays from the place (m): touch 0, close 5 cm, none 7 cm — the
 // acceptance band for "no contact" is 3-10 cm.
 float contact_distance(Contact c, bool on_hand) {
   if (is_touch(c)) return 0.0f;
   if (c == Contact::Close) return on_hand ? 0.04f : 0.05f;
-  return on_hand ? 0.06f : 0.08f;
+  return on_hand ? 0.06f : 0.07f;
 }
 
 bool finger_extended(const notation::FingerConfig& f) {
@@ -288,18 +289,23 @@ std::string body_anchor_name(const Location& loc, bool mirror_x) {
   return std::string("body/") + level_name(loc.level) + "/" + side_name(side);
 }
 
+bool validate_options(const SynthesisOptions& options, std::string* error) {
+  if (!(options.fps >= 5.0f && options.fps <= 240.0f)) {
+    *error = "fps must be between 5 and 240 (got " + std::to_string(options.fps) + ")";
+    return false;
+  }
+  if (!(options.speed >= 0.1f && options.speed <= 10.0f)) {
+    *error = "speed must be between 0.1 and 10 (got " + std::to_string(options.speed) + ")";
+    return false;
+  }
+  return true;
+}
+
 bool make_context(const avatar::Avatar& avatar, const SynthesisOptions& options, SynthContext* ctx,
                   std::string* error) {
   ctx->avatar = &avatar;
   ctx->options = options;
-  if (!(options.fps >= 5.0f && options.fps <= 240.0f)) {
-    *error = "fps must be between 5 and 240";
-    return false;
-  }
-  if (!(options.speed >= 0.1f && options.speed <= 10.0f)) {
-    *error = "speed must be between 0.1 and 10";
-    return false;
-  }
+  if (!validate_options(options, error)) return false;
   if (!build_rig(avatar, &ctx->rig, error)) return false;
   ctx->body = build_body_model(avatar, ctx->rig);
   const Rig& rig = ctx->rig;

@@ -28,6 +28,8 @@ struct SynthContext {
 };
 bool make_context(const avatar::Avatar& avatar, const SynthesisOptions& options, SynthContext* ctx,
                   std::string* error);
+// Options a synthesis can run with (fps 5..240, speed 0.1..10); `error` says which is wrong.
+bool validate_options(const SynthesisOptions& options, std::string* error);
 
 // Per-frame exemption from the penetration rule (intended contact), bit per side and kind.
 constexpr std::uint8_t exempt_bit(Side s, bool other_hand) {

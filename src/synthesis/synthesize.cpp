@@ -32,15 +32,56 @@ ClipSegment::Kind segment_kind(PhraseItem::Kind k) {
 
 }  // namespace
 
-SynthesisResult synthesize_phrase(const std::vector<PhraseItem>& items, const avatar::Avatar& avatar,
-                                  const SynthesisOptions& options) {
+namespace {
+
+SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem>& items);
+
+}  // namespace
+
+Synthesizer::Synthesizer(const avatar::Avatar& avatar, const SynthesisOptions& options)
+    : ctx_(new SynthContext) {
+  if (!make_context(avatar, options, ctx_, &error_)) error_ = error_.empty() ? "invalid avatar" : error_;
+}
+
+Synthesizer::~Synthesizer() { delete ctx_; }
+
+SynthesisResult Synthesizer::phrase(const std::vector<PhraseItem>& items, const SynthesisOptions& options) const {
   SynthesisResult result;
-  SynthContext ctx;
-  std::string error;
-  if (!make_context(avatar, options, &ctx, &error)) {
-    result.errors.push_back({"avatar", error});
+  if (!ok()) {
+    result.errors.push_back({"avatar", error_});
     return result;
   }
+  std::string error;
+  if (!validate_options(options, &error)) {
+    result.errors.push_back({"options", error});
+    return result;
+  }
+  // The avatar measurements do not depend on the options: reuse them with this call's options.
+  SynthContext ctx = *ctx_;
+  ctx.options = options;
+  return run_phrase(ctx, items);
+}
+
+SynthesisResult Synthesizer::sign(const notation::SignSpec& sign, const SynthesisOptions& options) const {
+  PhraseItem item;
+  item.kind = PhraseItem::Kind::Sign;
+  item.sign = sign;
+  item.label = sign.gloss;
+  item.word_index = 0;
+  return phrase({item}, options);
+}
+
+SynthesisResult synthesize_phrase(const std::vector<PhraseItem>& items, const avatar::Avatar& avatar,
+                                  const SynthesisOptions& options) {
+  Synthesizer synth(avatar, options);
+  return synth.phrase(items, options);
+}
+
+namespace {
+
+SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem>& items) {
+  SynthesisResult result;
+  const SynthesisOptions& options = ctx.options;
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
   const float fps = options.fps;
@@ -122,6 +163,8 @@ SynthesisResult synthesize_phrase(const std::vector<PhraseItem>& items, const av
                                      " mm: " + what);
   return result;
 }
+
+}  // namespace
 
 SynthesisResult synthesize_sign(const notation::SignSpec& sign, const avatar::Avatar& avatar,
                                 const SynthesisOptions& options) {

@@ -59,6 +59,28 @@ struct PhraseItem {
   int word_index = -1;       // which word of the typed phrase it belongs to
 };
 
+struct SynthContext;
+
+// A synthesizer bound to one avatar: measures the rig, the capsule body and the rest pose once
+// (the expensive part: a pass over the mesh), then synthesises any number of signs and phrases.
+// The avatar must outlive it. Check ok() / error() after construction.
+class Synthesizer {
+ public:
+  Synthesizer(const avatar::Avatar& avatar, const SynthesisOptions& options = {});
+  ~Synthesizer();
+  Synthesizer(const Synthesizer&) = delete;
+  Synthesizer& operator=(const Synthesizer&) = delete;
+  bool ok() const { return error_.empty(); }
+  const std::string& error() const { return error_; }
+  // Per-call options (speed, handedness, fps...) on the cached avatar measurements.
+  SynthesisResult phrase(const std::vector<PhraseItem>& items, const SynthesisOptions& options) const;
+  SynthesisResult sign(const notation::SignSpec& sign, const SynthesisOptions& options) const;
+
+ private:
+  SynthContext* ctx_ = nullptr;
+  std::string error_;
+};
+
 // One sign, from the rest pose (when options.start_from_rest) back to rest.
 SynthesisResult synthesize_sign(const notation::SignSpec& sign, const avatar::Avatar& avatar,
                                 const SynthesisOptions& options = {});

@@ -1,0 +1,54 @@
+// Synthesis time in WebAssembly (SIMD and scalar builds): one sign from rest and back, and a
+// 20-sign phrase, on the project's avatar (else the reference humanoid). Same signs as
+// bench/synthesis_bench.cpp; target: under 1 ms per sign.
+import { existsSync, readFileSync } from 'node:fs';
+import path from 'node:path';
+
+import { FLAVOURS, loadCore, printResult, timeNsPerCall } from './wasm_common.mjs';
+import { ROOT } from '../tests/node/wasm_loader.mjs';
+
+const SIGNS = [
+  'R(H(fist), F_9^1, E(u), P(o), Loc(shoulders, right, none))',
+  'R(H(flat, thumbacross), E(u), P(o), Loc(shoulders, right, none))',
+  'R(H(ceeall), E(u), P(l), Loc(shoulders, right, none))',
+  'R(H(finger2), E(u), P(o), Loc(chin, centre, touch))',
+  'R(H(flat), E(u), P(i), Loc(forehead, right, close), M(straight o))',
+  'R(H(pinch12), E(u), P(l), Loc(chest, right, none), M(circle axis=o cw small))',
+  'R(H(finger23spread), E(u), P(o), Loc(shoulders, right, none))',
+  'R(H(flat), E(l), P(d), Loc(neutral, centre, none), M(wavy r))',
+  'R(H(fist), E(l), P(i), Loc(chest, left, touch))',
+  'R(H(finger2), E(o), P(d), Loc(neutral, right, none), M(arc r bulge=u))',
+  'R(H(flat), E(u), P(o), Loc(shoulders, right, none), M(nod))',
+  'R(H(flat), E(u), P(l), Loc(chest, right, none), M(replace H(fist)))',
+  'R(H(finger2345), E(u), P(o), Loc(neutral, centre, none), M(fingerplay))',
+  'R(H(fist), E(u), P(o), Loc(cheeks, right, touch))',
+  'R(H(flat), E(o), P(u), Loc(neutral, centre, none), M(straight u)) Sym(lr)',
+  'R(H(finger2), E(u), P(o), Loc(mouth, centre, close), M(zigzag d))',
+  'R(H(ceeall), E(o), P(l), Loc(neutral, right, none), M(spiral axis=o ccw))',
+  'R(H(flat), E(u), P(o), Loc(shoulders, right, none), M(twist))',
+  'R(H(pinchall), E(u), P(o), Loc(chin, centre, close), M(straight o fast))',
+  'R(H(flat), E(u), P(o), Loc(eyebrows, right, close), M(ellipse axis=o cw))',
+];
+const PHRASE = SIGNS.map((s, i) => `S${i} = ${s}`).join('\n');
+const MODEL = path.join(ROOT, 'models', 'signweave-avatar.glb');
+
+for (const flavour of FLAVOURS) {
+  const core = await loadCore(flavour);
+  let avatar = existsSync(MODEL) ? core.synthAvatarLoad(readFileSync(MODEL)) : { error: 'no model' };
+  const which = avatar.error ? 'reference' : 'avatar';
+  if (avatar.error) avatar = core.synthAvatarReference();
+  let next = 0;
+  const perSign = timeNsPerCall(() => {
+    const clip = core.synthCompile(avatar.id, SIGNS[next++ % SIGNS.length], {});
+    if (clip.error) throw new Error(clip.error);
+    core.synthClipFree(clip.id);
+  });
+  printResult(`synthesis_per_sign_wasm_${flavour}_${which}`, perSign / 1e6, 'ms/sign');
+  const phrase = timeNsPerCall(() => {
+    const clip = core.synthCompile(avatar.id, PHRASE, {});
+    if (clip.error) throw new Error(clip.error);
+    core.synthClipFree(clip.id);
+  }, { minSeconds: 1.0 });
+  printResult(`synthesis_20_sign_phrase_wasm_${flavour}_${which}`, phrase / 1e6, 'ms/phrase');
+  printResult(`synthesis_20_sign_phrase_per_sign_wasm_${flavour}_${which}`, phrase / 20e6, 'ms/sign');
+}

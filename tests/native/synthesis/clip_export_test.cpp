@@ -1,0 +1,110 @@
+// Clip sampling and export: slerp between frames, BVH that the BVH reader reads back to the same
+// rotations, GLB that the glTF loader reads back with the skeleton and a valid animation.
+#include "synthesis/clip_export.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "avatar/gltf_loader.h"
+#include "skeleton/bvh.h"
+#include "synthesis/clip_sampler.h"
+#include "synthesis_fixture.h"
+
+namespace sw::synthesis {
+namespace {
+
+using namespace testing;
+
+SynthesisResult sample_sign(const avatar::Avatar& av) {
+  notation::SignSpec s = sign_at(index_point(), notation::BodyLevel::Chin, notation::Side::Centre,
+                                 notation::Contact::Touch);
+  return synthesize_sign(s, av);
+}
+
+TEST(SynthesisClip, SamplerHitsFramesAndSlerpsBetweenThem) {
+  avatar::Avatar av = make_reference_humanoid();
+  SynthesisResult r = sample_sign(av);
+  ASSERT_TRUE(r.ok());
+  const Clip& c = r.clip;
+  const int J = c.joint_count();
+  std::vector<glm::quat> q(J), mid(J);
+  sample_clip(c, 5.0 / c.fps, q.data(), nullptr, nullptr);
+  for (int j = 0; j < J; ++j) EXPECT_LT(rotation_angle(glm::conjugate(q[j]) * c.rotations[5 * J + j]), 1e-4f);
+  sample_clip(c, 5.5 / c.fps, mid.data(), nullptr, nullptr);
+  for (int j = 0; j < J; ++j) {
+    float a = rotation_angle(glm::conjugate(c.rotations[5 * J + j]) * mid[j]);
+    float b = rotation_angle(glm::conjugate(mid[j]) * c.rotations[6 * J + j]);
+    float ab = rotation_angle(glm::conjugate(c.rotations[5 * J + j]) * c.rotations[6 * J + j]);
+    EXPECT_NEAR(a, 0.5f * ab, 1e-3f);
+    EXPECT_NEAR(b, 0.5f * ab, 1e-3f);
+  }
+  // Clamped outside the clip.
+  sample_clip(c, -3.0, q.data(), nullptr, nullptr);
+  EXPECT_LT(rotation_angle(glm::conjugate(q[0]) * c.rotations[0]), 1e-4f);
+  std::vector<math::Transform> local(J);
+  EXPECT_TRUE(sample_clip_local(c, av.skeleton, 0.3, local.data()));
+  EXPECT_FALSE(sample_clip_local(c, skeleton::Skeleton{}, 0.3, local.data()));
+}
+
+TEST(SynthesisClip, BvhRoundTripsTheRotations) {
+  avatar::Avatar av = make_rotated_variant(1.0f);  // non-identity rest rotations
+  SynthesisResult r = sample_sign(av);
+  ASSERT_TRUE(r.ok());
+  ExportResult e = export_bvh(r.clip, av);
+  ASSERT_TRUE(e.ok()) << e.error;
+  std::string text(e.bytes.begin(), e.bytes.end());
+  skeleton::BvhReadResult back = skeleton::read_bvh(text);
+  ASSERT_TRUE(back.ok) << back.error.format();
+  ASSERT_EQ(back.bvh.frame_count, r.clip.frame_count);
+  const int J = r.clip.joint_count();
+  std::vector<math::Transform> local(J);
+  for (int f : {0, r.clip.frame_count / 2, r.clip.frame_count - 1}) {
+    ASSERT_TRUE(skeleton::frame_to_local(back.bvh, f, 0.01, local));
+    for (int j = 0; j < J; ++j) {
+      int b = back.bvh.find(r.clip.joint_names[j]);  // the writer orders joints depth-first
+      ASSERT_GE(b, 0) << r.clip.joint_names[j];
+      EXPECT_LT(rotation_angle(glm::conjugate(local[b].rotation) * r.clip.rotations[static_cast<size_t>(f) * J + j]), 1e-3f)
+          << "frame " << f << " joint " << j;
+    }
+    EXPECT_NEAR(glm::length(local[back.bvh.find(r.clip.joint_names[0])].translation - r.clip.root_translation[f]), 0.0f, 1e-4f);
+  }
+}
+
+TEST(SynthesisClip, GlbIsAValidGltfWithSkeletonAndAnimation) {
+  avatar::Avatar av = make_reference_humanoid();
+  SynthesisResult r = sample_sign(av);
+  ASSERT_TRUE(r.ok());
+  ExportResult e = export_glb(r.clip, av);
+  ASSERT_TRUE(e.ok()) << e.error;
+  ASSERT_GT(e.bytes.size(), 20u);
+  EXPECT_EQ(std::string(e.bytes.begin(), e.bytes.begin() + 4), "glTF");
+  std::uint32_t total = e.bytes[8] | (e.bytes[9] << 8) | (e.bytes[10] << 16) | (e.bytes[11] << 24);
+  EXPECT_EQ(total, e.bytes.size());
+  std::uint32_t json_len = e.bytes[12] | (e.bytes[13] << 8) | (e.bytes[14] << 16) | (e.bytes[15] << 24);
+  nlohmann::json j = nlohmann::json::parse(std::string(e.bytes.begin() + 20, e.bytes.begin() + 20 + json_len));
+  EXPECT_EQ(j["nodes"].size(), av.skeleton.joints.size());
+  ASSERT_EQ(j["animations"].size(), 1u);
+  EXPECT_EQ(j["animations"][0]["channels"].size(), av.skeleton.joints.size() + 1);
+  const auto& time_acc = j["accessors"][j["animations"][0]["samplers"][0]["input"].get<int>()];
+  EXPECT_NEAR(time_acc["max"][0].get<double>(), r.clip.duration_s(), 1e-4);
+  // The project's loader reads it back with the same skeleton (no mesh: the reference has none).
+  avatar::LoadResult back = avatar::load_avatar(e.bytes.data(), e.bytes.size());
+  if (back.ok()) {
+    EXPECT_EQ(back.avatar.skeleton.joint_count(), av.skeleton.joint_count());
+  }
+}
+
+TEST(SynthesisClip, ExportRejectsAClipOfAnotherSkeleton) {
+  avatar::Avatar av = make_reference_humanoid();
+  SynthesisResult r = sample_sign(av);
+  ASSERT_TRUE(r.ok());
+  r.clip.joint_names[3] = "somethingElse";
+  EXPECT_FALSE(export_bvh(r.clip, av).ok());
+  EXPECT_FALSE(export_glb(r.clip, av).ok());
+  Clip empty;
+  EXPECT_NE(export_glb(empty, av).error, "");
+}
+
+}  // namespace
+}  // namespace sw::synthesis
