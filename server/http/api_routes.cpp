@@ -324,27 +324,53 @@ void ApiRoutes::search_signs(const httplib::Request& req, httplib::Response& res
 
 void ApiRoutes::get_sign(const httplib::Request& req, httplib::Response& res, std::int64_t id) {
   check_params(req, {});
-  std::optional<store::SignRecord> sign = store_.get_sign(id);
-  if (!sign) throw ApiError(404, "no sign with id " + std::to_string(id), json{{"id", id}});
-  if (sign->deleted) {
+  // Why 20000 entries: several times the largest lexicon we ship; past it the cache starts over
+  // rather than growing with every id a client invents.
+  constexpr std::size_t kMaxCachedSigns = 20000;
+  std::int64_t generation = store_.content_generation();
+  CachedSign entry;
+  bool hit = false;
+  {
+    std::lock_guard<std::mutex> lock(sign_cache_mutex_);
+    auto found = sign_cache_.find(id);
+    if (found != sign_cache_.end() && found->second.generation == generation) {
+      entry = found->second;
+      hit = true;
+    }
+  }
+  if (!hit) {
+    std::optional<store::SignRecord> sign = store_.get_sign(id);
+    if (!sign) throw ApiError(404, "no sign with id " + std::to_string(id), json{{"id", id}});
+    entry.generation = generation;
+    entry.revision = sign->revision;
+    entry.deleted = sign->deleted;
+    if (!sign->deleted) entry.body = store::sign_to_json(*sign).dump(-1, ' ', false, json::error_handler_t::replace);
+    // A write between reading the generation and the sign would store a newer sign under an
+    // older generation: harmless, the next request sees a newer generation and reloads.
+    std::lock_guard<std::mutex> lock(sign_cache_mutex_);
+    if (sign_cache_.size() >= kMaxCachedSigns) sign_cache_.clear();
+    sign_cache_[id] = entry;
+  }
+  if (entry.deleted) {
     throw ApiError(410, "sign " + std::to_string(id) + " was deleted; GET /api/signs/" +
                             std::to_string(id) + "/history has its revisions",
-                   json{{"id", id}, {"current_revision", sign->revision}});
+                   json{{"id", id}, {"current_revision", entry.revision}});
   }
-  std::string etag = etag_for(sign->revision);
+  std::string etag = etag_for(entry.revision);
   res.set_header("ETag", etag);
   res.set_header("Cache-Control", "no-cache");
   if (req.get_header_value("If-None-Match") == etag) {
     res.status = 304;
     return;
   }
-  reply_json(res, 200, store::sign_to_json(*sign));
+  res.status = 200;
+  res.set_content(entry.body, "application/json");
 }
 
 void ApiRoutes::create_sign(const httplib::Request& req, httplib::Response& res) {
   std::string author = authenticate(req);
+  require_json_content_type(req);  // before the parameters: httplib reads a form body into them
   check_params(req, {});
-  require_json_content_type(req);
   if (req.body.size() > limits_.max_sign_body_bytes) {
     throw ApiError(413, "a sign body is at most " + std::to_string(limits_.max_sign_body_bytes) + " bytes",
                    json{{"limit_bytes", limits_.max_sign_body_bytes}});
@@ -358,9 +384,9 @@ void ApiRoutes::create_sign(const httplib::Request& req, httplib::Response& res)
 
 void ApiRoutes::update_sign(const httplib::Request& req, httplib::Response& res, std::int64_t id) {
   std::string author = authenticate(req);
+  require_json_content_type(req);
   check_params(req, {});
   std::int64_t expected = require_if_match(req);
-  require_json_content_type(req);
   if (req.body.size() > limits_.max_sign_body_bytes) {
     throw ApiError(413, "a sign body is at most " + std::to_string(limits_.max_sign_body_bytes) + " bytes",
                    json{{"limit_bytes", limits_.max_sign_body_bytes}});
@@ -417,8 +443,11 @@ void ApiRoutes::import_signs(const httplib::Request& req, httplib::Response& res
   if (items.empty() && rejected.empty()) {
     throw ApiError(400, "the body holds no sign lines (one JSON object per line)");
   }
-  store::ImportReport report;
-  if (rejected.empty()) report = store_.import_items(items, "import:" + author, store::ImportMode::AllOrNothing);
+  // Lines that are not even JSON stop the import, but the others are still checked so that one
+  // answer lists every problem of the file.
+  store::ImportReport report = store_.import_items(
+      items, "import:" + author,
+      rejected.empty() ? store::ImportMode::AllOrNothing : store::ImportMode::CheckOnly);
   report.rejected.insert(report.rejected.end(), rejected.begin(), rejected.end());
   if (!report.rejected.empty()) {
     json lines = json::array();

@@ -3,17 +3,31 @@
 
 #include <httplib.h>
 
+#include <sys/socket.h>
+
 #include <cstdio>
 
 #include "http/json_reply.h"
 
 namespace sw::http {
 
+// Debian's libcpp-httplib was compiled with a listen backlog of 5: a burst of new connections
+// (a page load opens several, a benchmark 64) overflows it and the kernel drops SYNs, which
+// clients retry only after a second. The listening socket is reachable from a subclass, and
+// calling listen() again on it raises the backlog.
+class BacklogServer : public httplib::Server {
+ public:
+  void raise_backlog(int backlog) {
+    socket_t socket = svr_sock_;
+    if (socket != INVALID_SOCKET) ::listen(socket, backlog);
+  }
+};
+
 HttpServer::HttpServer(store::Store& store, const ServerConfig& config)
     : store_(store), config_(config) {
   routes_ = std::make_unique<ApiRoutes>(store_, metrics_, config_.web_dir, config_.models_dir,
                                         config_.api_limits);
-  server_ = std::make_unique<httplib::Server>();
+  server_ = std::make_unique<BacklogServer>();
   httplib::Server& server = *server_;
   int threads = config_.threads;
   server.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
@@ -72,6 +86,9 @@ int HttpServer::bind(std::string* error) {
   } else {
     port = server_->bind_to_port(config_.host, config_.port) ? config_.port : -1;
   }
+  // Why 1024: the kernel's default somaxconn on current Linux is 4096; 1024 absorbs any burst a
+  // single self-hosted server sees without holding many half-open connections.
+  if (port > 0) static_cast<BacklogServer*>(server_.get())->raise_backlog(1024);
   if (port <= 0) {
     if (error) *error = "cannot listen on " + config_.host + ":" + std::to_string(config_.port) + " (in use, or not an address of this machine)";
     return -1;

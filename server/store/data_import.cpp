@@ -132,12 +132,10 @@ FileImportReport import_paths(Store& store, const std::vector<std::string>& path
     std::string language = file.parent_path().filename().string();
     read_json_lines(text, file.string(), language, &items, &unreadable);
   }
-  if (mode == ImportMode::AllOrNothing && (!unreadable.empty() || !report.signs.rejected.empty())) {
-    report.signs.rejected.insert(report.signs.rejected.end(), unreadable.begin(), unreadable.end());
-    return report;
-  }
-  ImportReport signs = store.import_items(items, author, mode);
-  if (mode == ImportMode::AllOrNothing && !unreadable.empty()) signs.committed = false;
+  // With all-or-nothing, a file that cannot be read stops the import; the signs are still
+  // checked so that one run reports every problem.
+  bool blocked = mode == ImportMode::AllOrNothing && (!unreadable.empty() || !report.signs.rejected.empty());
+  ImportReport signs = store.import_items(items, author, blocked ? ImportMode::CheckOnly : mode);
   signs.rejected.insert(signs.rejected.end(), unreadable.begin(), unreadable.end());
   signs.rejected.insert(signs.rejected.end(), report.signs.rejected.begin(), report.signs.rejected.end());
   std::sort(signs.rejected.begin(), signs.rejected.end(),

@@ -460,6 +460,14 @@ SignRecord Store::delete_sign(std::int64_t id, std::int64_t expected_revision, c
   return *deleted;
 }
 
+std::int64_t Store::content_generation() {
+  Lease db = lease();
+  Statement& query = db->prepare("SELECT value FROM meta WHERE key = 'content_generation'");
+  std::int64_t generation = query.step() ? query.column_int(0) : 0;
+  query.reset();
+  return generation;
+}
+
 std::vector<RevisionRecord> Store::history(std::int64_t id) {
   Lease db = lease();
   ReadTransaction snapshot(*db);
@@ -534,6 +542,7 @@ ImportReport Store::import_items(const std::vector<ImportItem>& items, const std
       reject(item, error);
     }
   }
+  if (mode == ImportMode::CheckOnly) return report;
   if (mode == ImportMode::AllOrNothing && !report.rejected.empty()) return report;
 
   // Phase 2: one transaction; each sign in a savepoint so SkipInvalid can drop just that one.

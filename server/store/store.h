@@ -60,6 +60,7 @@ struct ImportReport {
 enum class ImportMode {
   AllOrNothing,  // any rejected line: nothing is written (the HTTP bulk import)
   SkipInvalid,   // write the valid lines, report the rest (first start from data/, the CLI default)
+  CheckOnly,     // validate every line and report; write nothing (a dry run)
 };
 
 struct TokenCheck {
@@ -91,6 +92,9 @@ class Store {
                          const std::string& author);
   SignRecord delete_sign(std::int64_t id, std::int64_t expected_revision, const std::string& author);
   std::vector<RevisionRecord> history(std::int64_t id);
+  // meta.content_generation: moves with every committed change to signs, keywords or alphabets
+  // (by this process or another), so anything derived from them can be cached against it.
+  std::int64_t content_generation();
   std::int64_t count_live_signs();
 
   // --- search and lookup (search_index.h has the ranking)
