@@ -7,6 +7,7 @@
 
 #include <meshoptimizer.h>
 
+#include "face_regions.h"
 #include "surface_nets.h"
 
 namespace sw::avatar_generator {
@@ -85,6 +86,7 @@ void add_tongue(const HumanoidLayout& layout, std::vector<MeshPiece>& pieces) {
   MeshPiece tongue;
   tongue.material = Material::kTongue;
   tongue.rigid_joint = layout.find("jaw");
+  tongue.face = true;
   const glm::vec3 centre(0.0f, kMouthY - 0.0045f, 0.070f);
   const glm::vec3 radii(0.018f, 0.0040f, 0.026f);
   constexpr int kRings = 8, kSegments = 14;
@@ -149,16 +151,25 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
   const RawMesh raw = polygonise_surface_nets(body, settings.cell_m);
   if (stats) stats->raw_triangles = raw.indices.size() / 3;
 
-  // Material per vertex, then per triangle (majority of its corners).
+  // Material per vertex, then per triangle (majority of its corners); face-region triangles of
+  // the materials the morphs move get their own key, so the face mesh is split off along a seam.
   std::vector<int> vertex_surface(raw.positions.size());
   for (size_t v = 0; v < raw.positions.size(); ++v)
     vertex_surface[v] = static_cast<int>(body.surface_at(raw.positions[v], raw.nearest_primitive[v]));
   const size_t triangle_count = raw.indices.size() / 3;
+  constexpr int kFaceKey = 100;  // key = surface, + kFaceKey for face-mesh triangles
   std::vector<int> triangle_surface(triangle_count);
   for (size_t t = 0; t < triangle_count; ++t) {
     const int a = vertex_surface[raw.indices[3 * t]], b = vertex_surface[raw.indices[3 * t + 1]],
               c = vertex_surface[raw.indices[3 * t + 2]];
-    triangle_surface[t] = (b == c) ? b : a;
+    int key = (b == c) ? b : a;
+    const glm::vec3 centroid = (raw.positions[raw.indices[3 * t]] + raw.positions[raw.indices[3 * t + 1]] +
+                                raw.positions[raw.indices[3 * t + 2]]) / 3.0f;
+    const Surface s = static_cast<Surface>(key);
+    const bool face_material = s == Surface::kSkin || s == Surface::kLips ||
+                               s == Surface::kBrows || s == Surface::kMouthInner;
+    if (face_material && in_face_region(centroid)) key += kFaceKey;
+    triangle_surface[t] = key;
   }
 
   // Duplicate every vertex once per material that uses it: the material boundaries become
@@ -199,9 +210,12 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
     for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
     return all;
   }();
-  for (int m = 0; m < static_cast<int>(Surface::kCount); ++m) {
+  for (int key = 0; key < kFaceKey + static_cast<int>(Surface::kCount); ++key) {
+    if (key % kFaceKey >= static_cast<int>(Surface::kCount)) continue;
+    const int m = key;
     MeshPiece piece;
-    piece.material = static_cast<Material>(m);
+    piece.material = static_cast<Material>(key % kFaceKey);
+    piece.face = key >= kFaceKey;
     std::map<std::uint32_t, std::uint32_t> remap;
     for (size_t t = 0; t + 2 < simplified.size(); t += 3) {
       if (surface[simplified[t]] != m) continue;

@@ -29,6 +29,7 @@ struct MeshPiece {            // one glTF primitive's worth of geometry
   std::vector<glm::vec3> normals;
   std::vector<int> nearest_primitive;  // body pieces: field primitive at the vertex; -1 otherwise
   int rigid_joint = -1;                // eyes/tongue: the single joint that carries them
+  bool face = false;                   // belongs to the "face" mesh (the one with morph targets)
   std::vector<std::uint32_t> indices;
 };
 

@@ -79,33 +79,6 @@ int GlbBuilder::add_indices(const std::vector<std::uint32_t>& indices) {
   return add_accessor(view, kUnsignedInt, indices.size(), "SCALAR");
 }
 
-int GlbBuilder::add_sparse_vec3(std::size_t count, const std::vector<std::uint32_t>& moved,
-                                const std::vector<glm::vec3>& deltas) {
-  const int accessor = add_accessor(-1, kFloat, count, "VEC3");
-  const bool narrow = count < 65536;
-  int index_view;
-  if (narrow) {
-    std::vector<std::uint16_t> small(moved.begin(), moved.end());
-    index_view = add_view(small.data(), small.size() * 2, 0);
-  } else {
-    index_view = add_view(moved.data(), moved.size() * 4, 0);
-  }
-  const int value_view = add_view(deltas.data(), deltas.size() * sizeof(glm::vec3), 0);
-  glm::vec3 lo(0.0f), hi(0.0f);  // unlisted elements are zero, so 0 is inside the bounds
-  for (const glm::vec3& d : deltas) {
-    lo = glm::min(lo, d);
-    hi = glm::max(hi, d);
-  }
-  auto& json = document_["accessors"][accessor];
-  json["min"] = {lo.x, lo.y, lo.z};
-  json["max"] = {hi.x, hi.y, hi.z};
-  json["sparse"] = {{"count", moved.size()},
-                    {"indices", {{"bufferView", index_view},
-                                 {"componentType", narrow ? kUnsignedShort : kUnsignedInt}}},
-                    {"values", {{"bufferView", value_view}}}};
-  return accessor;
-}
-
 std::vector<std::uint8_t> GlbBuilder::serialise() const {
   nlohmann::json document = document_;
   std::vector<std::uint8_t> binary = binary_;

@@ -26,11 +26,6 @@ class GlbBuilder {
   int add_joints_u16(const std::vector<std::uint16_t>& values_x4);
   int add_mat4(const std::vector<glm::mat4>& values);
   int add_indices(const std::vector<std::uint32_t>& indices);  // u16 when every index fits
-  // A morph target stored sparsely (glTF 2.0 §3.6.2.3): no base buffer view (all zeros) and only
-  // the vertices that move.
-  int add_sparse_vec3(std::size_t count, const std::vector<std::uint32_t>& moved,
-                      const std::vector<glm::vec3>& deltas);
-
   // Serialises to GLB bytes; then writes them. Returns false with `error` on I/O failure.
   std::vector<std::uint8_t> serialise() const;
   bool write(const std::string& path, std::string* error) const;

@@ -122,16 +122,12 @@ void export_avatar(const ExportModel& model, GlbBuilder& glb) {
       if (with_morphs) {
         nlohmann::json targets = nlohmann::json::array();
         for (const MorphTargetData& morph : ep.morphs) {
-          std::vector<std::uint32_t> moved;
-          std::vector<glm::vec3> deltas;
-          for (size_t v = 0; v < morph.position_deltas.size(); ++v)
-            if (glm::length(morph.position_deltas[v]) > 1e-6f) {
-              moved.push_back(static_cast<std::uint32_t>(v));
-              deltas.push_back(morph.position_deltas[v]);
-            }
+          bool moves = false;
+          for (const glm::vec3& d : morph.position_deltas) moves = moves || d != glm::vec3(0.0f);
           int accessor;
-          if (moved.empty()) {
-            // A target that does not move this piece: a zero accessor with no buffer view.
+          if (!moves) {
+            // A target that does not move this piece: an accessor with no buffer view is all
+            // zeros (glTF 2.0 §3.6.2.3), so it costs no bytes.
             nlohmann::json zero = {{"componentType", 5126},
                                    {"count", piece.positions.size()},
                                    {"type", "VEC3"},
@@ -140,7 +136,9 @@ void export_avatar(const ExportModel& model, GlbBuilder& glb) {
             doc["accessors"].push_back(zero);
             accessor = static_cast<int>(doc["accessors"].size()) - 1;
           } else {
-            accessor = glb.add_sparse_vec3(piece.positions.size(), moved, deltas);
+            // Dense, not sparse: the core loader (src/avatar/gltf_loader.cpp) reads no sparse
+            // accessors; the face mesh is kept small instead.
+            accessor = glb.add_vec3(morph.position_deltas, true, true);
           }
           targets.push_back({{"POSITION", accessor}});
         }

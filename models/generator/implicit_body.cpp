@@ -145,13 +145,15 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   blob(head_part, {0.0f, 1.612f, -0.012f}, {0.075f, 0.094f, 0.096f}, Surface::kSkin, head, -1);
   blob(head_part, {0.0f, 1.585f, 0.020f}, {0.068f, 0.080f, 0.076f}, Surface::kSkin, head, -1);
   // Mandible: a jaw ellipsoid and the chin; both follow the jaw bone.
-  blob(head_part, {0.0f, 1.520f, 0.030f}, {0.060f, 0.042f, 0.062f}, Surface::kSkin, jaw, -1);
-  blob(head_part, {0.0f, 1.492f, 0.072f}, {0.024f, 0.020f, 0.020f}, Surface::kSkin, jaw, -1);
+  blob(head_part, {0.0f, 1.526f, 0.030f}, {0.056f, 0.036f, 0.060f}, Surface::kSkin, jaw, -1);
+  blob(head_part, {0.0f, 1.496f, 0.076f}, {0.019f, 0.015f, 0.014f}, Surface::kSkin, jaw, -1);
+  // Forehead: keeps the brow-to-hairline profile near vertical instead of sloping back.
+  blob(head_part, {0.0f, 1.648f, 0.018f}, {0.066f, 0.048f, 0.072f}, Surface::kSkin, head, -1);
   for (float side : {1.0f, -1.0f}) {
     // cheek bones and the soft cheeks
     blob(head_part, {side * 0.046f, 1.585f, 0.066f}, {0.024f, 0.018f, 0.022f}, Surface::kSkin, head,
          -1);
-    blob(head_part, {side * 0.036f, 1.548f, 0.070f}, {0.026f, 0.024f, 0.022f}, Surface::kSkin, head,
+    blob(head_part, {side * 0.040f, 1.550f, 0.060f}, {0.026f, 0.026f, 0.022f}, Surface::kSkin, head,
          -1);
   }
   // Ears: flat discs at the sides, centred at eye-to-nose height.
@@ -170,24 +172,24 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   // Brow ridges: slight, so the brows catch the light.
   const int brow_part = add_part("brows", head_part, 0.010f, 0.006f);
   for (float side : {1.0f, -1.0f})
-    cone(brow_part, {side * 0.013f, 1.622f, 0.092f}, {side * 0.052f, 1.628f, 0.074f}, 0.0060f,
-         0.0045f, Surface::kBrows, head, -1);
+    cone(brow_part, {side * 0.013f, 1.622f, 0.091f}, {side * 0.052f, 1.628f, 0.073f}, 0.0052f,
+         0.0038f, Surface::kBrows, head, -1);
   // Lips: upper and lower lip as curved chains of round cones meeting at the mouth corners.
   const int lips_part = add_part("lips", head_part, 0.006f, 0.004f);
   const float mouth_y = kMouthY;
   for (float side : {1.0f, -1.0f}) {
-    cone(lips_part, {0.0f, mouth_y + 0.0055f, 0.1015f}, {side * 0.014f, mouth_y + 0.0045f, 0.098f},
-         0.0062f, 0.0052f, Surface::kLips, head, -1);
-    cone(lips_part, {side * 0.014f, mouth_y + 0.0045f, 0.098f},
-         {side * 0.025f, mouth_y + 0.0005f, 0.089f}, 0.0052f, 0.0028f, Surface::kLips, head, -1);
-    cone(lips_part, {0.0f, mouth_y - 0.0060f, 0.0990f}, {side * 0.014f, mouth_y - 0.0050f, 0.096f},
-         0.0068f, 0.0058f, Surface::kLips, jaw, -1);
-    cone(lips_part, {side * 0.014f, mouth_y - 0.0050f, 0.096f},
-         {side * 0.025f, mouth_y - 0.0005f, 0.089f}, 0.0058f, 0.0028f, Surface::kLips, jaw, -1);
+    cone(lips_part, {0.0f, mouth_y + 0.0042f, 0.0985f}, {side * 0.013f, mouth_y + 0.0036f, 0.0960f},
+         0.0048f, 0.0040f, Surface::kLips, head, -1);
+    cone(lips_part, {side * 0.013f, mouth_y + 0.0036f, 0.0960f},
+         {side * 0.0235f, mouth_y + 0.0004f, 0.0880f}, 0.0040f, 0.0022f, Surface::kLips, head, -1);
+    cone(lips_part, {0.0f, mouth_y - 0.0048f, 0.0965f}, {side * 0.013f, mouth_y - 0.0042f, 0.0940f},
+         0.0054f, 0.0046f, Surface::kLips, jaw, -1);
+    cone(lips_part, {side * 0.013f, mouth_y - 0.0042f, 0.0940f},
+         {side * 0.0235f, mouth_y - 0.0004f, 0.0880f}, 0.0046f, 0.0022f, Surface::kLips, jaw, -1);
   }
   // The mouth slit: a thin pocket between the lips, 5 cm wide, 3 cm deep; its walls are the dark
   // inner mouth that shows when the jaw opens.
-  carve(head_part, {0.0f, mouth_y, 0.085f}, {0.0255f, 0.0016f, 0.030f}, 0.0015f,
+  carve(head_part, {0.0f, mouth_y, 0.082f}, {0.0225f, 0.0014f, 0.030f}, 0.0012f,
         Surface::kMouthInner);
   // Eyelids: a skin shell hugging each eyeball (1.2 mm outside it), opened by an almond slit that
   // shows the eyeball (a separate mesh on the eye joint). The slit's rim is the lid margin;
@@ -196,7 +198,7 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   for (float side : {1.0f, -1.0f}) {
     const glm::vec3 eye = J(side > 0 ? "leftEye" : "rightEye");
     blob(lid_part, eye, glm::vec3(kEyelidRadius), Surface::kSkin, head, -1);
-    carve(head_part, eye + glm::vec3(side * 0.0008f, 0.0f, 0.0125f), {0.0140f, 0.0058f, 0.0085f},
+    carve(head_part, eye + glm::vec3(side * 0.0008f, 0.0f, 0.0125f), {0.0145f, 0.0062f, 0.0085f},
           0.0012f, Surface::kSkin);
   }
   // Hair: a cap over the cranium, a little fuller at the back.
@@ -307,11 +309,13 @@ SurfaceSample ImplicitBody::sample(glm::vec3 p, const std::vector<int>& active) 
   float own[kMaxParts];
   float carve_value[kMaxParts];
   float carve_k[kMaxParts];
+  int carve_primitive[kMaxParts];
   const int part_count = static_cast<int>(parts_.size());
   for (int i = 0; i < part_count; ++i) {
     own[i] = kFar;
     carve_value[i] = -kFar;
     carve_k[i] = 0.0f;
+    carve_primitive[i] = -1;
   }
   SurfaceSample result;
   float nearest = kFar;
@@ -320,7 +324,10 @@ SurfaceSample ImplicitBody::sample(glm::vec3 p, const std::vector<int>& active) 
     const float d = primitive_distance(q, p);
     if (q.carve) {
       // Subtracting several carves from one part = subtracting their union.
-      if (-d > carve_value[q.part]) carve_value[q.part] = -d;
+      if (-d > carve_value[q.part]) {
+        carve_value[q.part] = -d;
+        carve_primitive[q.part] = index;
+      }
       carve_k[q.part] = std::max(carve_k[q.part], q.carve_k);
       continue;
     }
@@ -334,7 +341,11 @@ SurfaceSample ImplicitBody::sample(glm::vec3 p, const std::vector<int>& active) 
   float combined[kMaxParts];
   for (int i = 0; i < part_count; ++i) combined[i] = own[i];
   for (int i = part_count - 1; i >= 0; --i) {
-    if (carve_value[i] > -kFar) combined[i] = smooth_max(combined[i], carve_value[i], carve_k[i]);
+    if (carve_value[i] > -kFar) {
+      // Where the carve shapes the surface, the surface is the carve's (the inside of the mouth).
+      if (carve_value[i] > combined[i] - carve_k[i]) result.nearest_primitive = carve_primitive[i];
+      combined[i] = smooth_max(combined[i], carve_value[i], carve_k[i]);
+    }
     const int parent = parts_[static_cast<size_t>(i)].parent;
     if (parent < 0) continue;
     const float blended = smooth_min(own[parent], combined[i], parts_[static_cast<size_t>(i)].blend_k);
@@ -368,9 +379,35 @@ std::vector<int> ImplicitBody::primitives_near(glm::vec3 box_min, glm::vec3 box_
   return result;
 }
 
+// Brows and lip red are drawn as bands in the face's front view (x, y), so their edges are
+// clean curves whatever primitive happens to be nearest.
+static Surface face_colour_at(glm::vec3 p) {
+  if (p.z < 0.060f) return Surface::kSkin;
+  const float ax = std::fabs(p.x);
+  // Brow: from the inner end (13 mm from the midline) arching to the tail (55 mm).
+  if (ax > 0.012f && ax < 0.055f && p.z > 0.066f) {
+    const float t = (ax - 0.012f) / 0.043f;
+    const float centre_y = 1.6225f + 0.0075f * std::sin(t * 2.4f) - 0.002f * t;
+    const float half_thickness = 0.0036f - 0.0020f * t * t;
+    if (std::fabs(p.y - centre_y) < half_thickness) return Surface::kBrows;
+  }
+  // Lip red: the vermilion between the lip line and its border, upper with a Cupid's bow.
+  const float half_width = 0.0238f;
+  if (ax < half_width && p.z > 0.082f) {
+    const float u = ax / half_width;
+    const float profile = std::sqrt(std::max(0.0f, 1.0f - u * u * u));
+    const float bow = 0.0012f * std::exp(-std::pow((ax - 0.0045f) / 0.003f, 2.0f)) -
+                      0.0008f * std::exp(-std::pow(ax / 0.002f, 2.0f));
+    const float upper = (0.0072f + bow) * profile, lower = 0.0088f * profile;
+    if (p.y > kMouthY - lower && p.y < kMouthY + upper) return Surface::kLips;
+  }
+  return Surface::kSkin;
+}
+
 Surface ImplicitBody::surface_at(glm::vec3 p, int nearest_primitive) const {
   if (nearest_primitive < 0) return Surface::kSkin;
   const ImplicitPrimitive& q = primitives_[static_cast<size_t>(nearest_primitive)];
+  if (q.carve) return q.surface;  // the walls of the mouth slit, the lid margins
   const std::string& part = parts_[static_cast<size_t>(q.part)].name;
   // Garment lines are planes or simple curves so the edges read as hems, not as blend seams.
   const float waist_y = 1.005f;
@@ -388,6 +425,10 @@ Surface ImplicitBody::surface_at(glm::vec3 p, int nearest_primitive) const {
     return std::fabs(p.x) < cuff ? Surface::kTop : Surface::kSkin;
   }
   if (part == "leftLeg" || part == "rightLeg") return p.y > 0.115f ? Surface::kTrousers : Surface::kShoes;
+  if (part == "head" || part == "eyelids" || part == "nose") {
+    const Surface face = face_colour_at(p);
+    if (face != Surface::kSkin) return face;
+  }
   if (part == "head" || part == "hair" || part == "ears") {
     // Hairline: high at the forehead, over the ears at the sides, low at the nape.
     const float front = 1.655f, side = 1.625f, back = 1.545f;
@@ -400,9 +441,7 @@ Surface ImplicitBody::surface_at(glm::vec3 p, int nearest_primitive) const {
     if (part == "hair") return p.y > hairline - 0.01f ? Surface::kHair : Surface::kSkin;
     return Surface::kSkin;
   }
-  if (part == "brows") {
-    return Surface::kBrows;
-  }
+  if (part == "brows" || part == "lips") return face_colour_at(p);
   return q.surface;
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "avatar_mesh.h"
+#include "face_morphs.h"
 #include "face_regions.h"
 #include "gltf_export.h"
 #include "humanoid_layout.h"
@@ -63,7 +64,8 @@ int run(int argc, char** argv) {
 
   ExportModel model;
   model.layout = &layout;
-  std::size_t vertices = 0, triangles = 0;
+  model.morph_names = face_morph_names();
+  std::size_t vertices = 0, triangles = 0, face_vertices = 0;
   for (const MeshPiece& piece : pieces) {
     ExportPiece ep;
     ep.piece = &piece;
@@ -71,9 +73,20 @@ int run(int argc, char** argv) {
                   ? rigid_weights(piece)
                   : compute_skin_weights(layout, body, piece.positions, piece.nearest_primitive,
                                          piece.indices, &jaw_mask);
+    if (piece.face) {
+      for (size_t channel = 0; channel < model.morph_names.size(); ++channel) {
+        MorphTargetData target;
+        target.position_deltas.reserve(piece.positions.size());
+        for (const glm::vec3& p : piece.positions)
+          target.position_deltas.push_back(
+              face_morph_delta(layout, static_cast<int>(channel), p, piece.material));
+        ep.morphs.push_back(std::move(target));
+      }
+    }
     vertices += piece.positions.size();
     triangles += piece.indices.size() / 3;
-    model.body_pieces.push_back(std::move(ep));
+    if (piece.face) face_vertices += piece.positions.size();
+    (piece.face ? model.face_pieces : model.body_pieces).push_back(std::move(ep));
   }
   GlbBuilder glb;
   export_avatar(model, glb);
@@ -85,10 +98,10 @@ int run(int argc, char** argv) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf(
-      "wrote %s: %zu joints, %zu vertices, %zu triangles (polygonised %zu, body simplified to "
-      "%zu), %.1f s\n",
-      output.c_str(), layout.joints.size(), vertices, triangles, stats.raw_triangles,
-      stats.body_triangles, seconds);
+      "wrote %s: %zu bytes, %zu joints, %zu vertices (%zu in the face mesh), %zu triangles "
+      "(polygonised %zu, body simplified to %zu), %zu morph targets, %.1f s\n",
+      output.c_str(), glb.serialise().size(), layout.joints.size(), vertices, face_vertices,
+      triangles, stats.raw_triangles, stats.body_triangles, model.morph_names.size(), seconds);
   return 0;
 }
 

@@ -248,11 +248,13 @@ class AnchorBuilder {
 
   // The five sides of one level: front-surface points across, or lateral/oblique rays for the
   // levels whose sides are on the side of the head (ears, cheeks).
-  void level(const std::string& name, float h, int j, int j_left, int j_right, float inset_m = 0.0f) {
+  // `regions`: the parts a level's rays may stop on (below the waist the thighs' skin is there).
+  void level(const std::string& name, float h, int j, int j_left, int j_right, float inset_m = 0.0f,
+             unsigned regions = kCore) {
     const glm::vec3 o = axis(h);
-    const float wl = half_width(h, 1.0f, kCore, 0.08f);
-    const float wr = half_width(h, -1.0f, kCore, 0.08f);
-    const Hit centre = surface("body/" + name + "/centre", o, forward_, kCore, 0.08f);
+    const float wl = half_width(h, 1.0f, regions, 0.08f);
+    const float wr = half_width(h, -1.0f, regions, 0.08f);
+    const Hit centre = surface("body/" + name + "/centre", o, forward_, regions, 0.08f);
     const std::string base = "body/" + name + "/";
     Hit left, right;
     if (name == "ears") {
@@ -261,9 +263,19 @@ class AnchorBuilder {
     } else if (name == "cheeks") {
       left = surface(base + "left", o, glm::normalize(forward_ * 0.8f + left_ * 0.6f), kCore, wl);
       right = surface(base + "right", o, glm::normalize(forward_ * 0.8f - left_ * 0.6f), kCore, wr);
+    } else if (name == "shoulders") {
+      // The front of each shoulder: three quarters of the way out to the upper-arm joint, where
+      // the deltoid (often weighted to the arm) begins.
+      const auto reach = [&](int id) {
+        const glm::vec3 d = position(id) - o;
+        return glm::length(d - up_ * glm::dot(d, up_));
+      };
+      const unsigned with_arms = regions | kLeftArm | kRightArm;
+      left = surface(base + "left", o + left_ * (0.75f * reach(skeleton::kLeftUpperArm)), forward_, with_arms, centre.distance);
+      right = surface(base + "right", o - left_ * (0.75f * reach(skeleton::kRightUpperArm)), forward_, with_arms, centre.distance);
     } else {
-      left = surface(base + "left", o + left_ * (0.5f * wl), forward_, kCore, centre.distance);
-      right = surface(base + "right", o - left_ * (0.5f * wr), forward_, kCore, centre.distance);
+      left = surface(base + "left", o + left_ * (0.5f * wl), forward_, regions, centre.distance);
+      right = surface(base + "right", o - left_ * (0.5f * wr), forward_, regions, centre.distance);
     }
     // Teeth and tongue sit behind the lips: the lip points moved inward along the normal.
     const auto inside = [&](Hit hit) { hit.point -= forward_ * inset_m; return hit; };
@@ -321,7 +333,7 @@ class AnchorBuilder {
     level("teeth", mouth_h, head, head, head, 0.012f);
     level("tongue", mouth_h, head, head, head, 0.02f);
     level("chin", chin_h_ + 0.08f * head_height, head, head, head);
-    const float neck_level = neck_h_ + 0.35f * (chin_h_ - neck_h_);
+    const float neck_level = neck_h_ + 0.2f * (chin_h_ - neck_h_);
     under_chin(neck_level, head);
     level("neck", neck_level, neck, neck, neck);
     level("shoulders", shoulder_h_, chest, lshoulder, rshoulder);
@@ -331,25 +343,32 @@ class AnchorBuilder {
     level("stomach", leg_h_ + 0.55f * torso, mid, mid, mid);
     level("belly", leg_h_ + 0.42f * torso, spine, spine, spine);
     level("waist", leg_h_ + 0.32f * torso, spine, spine, spine);
-    level("below_waist", leg_h_ + 0.14f * torso, hips, hips, hips);
+    level("below_waist", leg_h_ + 0.14f * torso, hips, hips, hips, 0.0f, kCore | kLegs);
   }
 
   // Under the chin: rays up from just in front of the neck onto the jaw's underside.
   void under_chin(float neck_level, int head) {
     const glm::vec3 o = axis(neck_level);
     const Hit neck_front = surface("body/neck/centre", o, forward_, kCore, 0.05f);
+    // The chin's front at the chin anchor's height (chin_h_ itself is where the profile has
+    // already dropped toward the neck).
+    const float chin_point_h = chin_h_ + 0.08f * (top_h_ - chin_h_);
+    const Hit chin_front = surface("body/chin/centre", axis(chin_point_h), forward_, kCore, neck_front.distance + 0.03f);
+    // Under the jaw: rays up from below a point 1.5 cm behind the chin's front (the neck's front
+    // slopes forward toward the jaw, and a ray started nearer the neck stops on that slope).
+    const float depth = std::max(chin_front.distance - 0.015f, 0.0f);
     const float w = half_width(neck_level, 1.0f, kCore, 0.05f);
     for (int s = 0; s < 5; ++s) {
       const std::string name = std::string("body/under_chin/") + kSides[static_cast<std::size_t>(s)];
       const float k = static_cast<float>(s - 2) * 0.5f * w;
-      const glm::vec3 start = o + forward_ * (neck_front.distance + 0.012f) + left_ * k;
-      const glm::vec3 chin = axis(chin_h_) + forward_ * (neck_front.distance + 0.012f) + left_ * k;
+      const glm::vec3 chin = axis(chin_point_h) + forward_ * depth + left_ * k;
+      const glm::vec3 start = chin - up_ * (chin_point_h - neck_level);
       if (s == 0 || s == 4) {
         add(name, head, start + left_ * (2.0f * k), -up_);
         continue;
       }
       auto hit = surface_.cast(start, up_, kCore);
-      if (!hit || height(hit->point) > chin_h_ + 0.04f) {
+      if (!hit || height(hit->point) > chin_point_h || height(hit->point) < neck_level) {
         warn(name + ": no jaw underside found, placed below the chin");
         add(name, head, chin - up_ * 0.01f, -up_);
       } else {

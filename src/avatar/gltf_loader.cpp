@@ -51,20 +51,35 @@ void write_u32(std::vector<std::uint8_t>& out, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
 }
 
-// Depth of the JSON tree without recursion (a hostile "[[[[..." must not overflow our stack).
-int json_depth(const json& root) {
-  int deepest = 0;
+// One pass over the JSON tree without recursion (a hostile "[[[[..." must not overflow our stack):
+// its depth, and whether it holds a number no glTF field can take. Counts, offsets and indices
+// are at most 2^32 (the file is at most 4 GiB) and factors/matrices are moderate; larger numbers
+// would be cast to size_t/int inside tinygltf, which is undefined behaviour natively.
+struct JsonShape {
+  int depth = 0;
+  bool number_out_of_range = false;
+};
+
+JsonShape json_shape(const json& root) {
+  JsonShape shape;
   std::vector<std::pair<const json*, int>> stack{{&root, 1}};
   while (!stack.empty()) {
     auto [node, depth] = stack.back();
     stack.pop_back();
-    deepest = std::max(deepest, depth);
-    if (depth > 1024) return depth;
-    if (node->is_array() || node->is_object()) {
+    shape.depth = std::max(shape.depth, depth);
+    if (depth > 1024) return shape;
+    if (node->is_number_float()) {
+      if (!(std::abs(node->get<double>()) < 1e15)) shape.number_out_of_range = true;
+    } else if (node->is_number_unsigned()) {
+      if (node->get<std::uint64_t>() > 0xFFFFFFFFull) shape.number_out_of_range = true;
+    } else if (node->is_number_integer()) {
+      const std::int64_t v = node->get<std::int64_t>();
+      if (v < -0x7FFFFFFFll || v > 0xFFFFFFFFll) shape.number_out_of_range = true;
+    } else if (node->is_array() || node->is_object()) {
       for (const auto& child : *node) stack.push_back({&child, depth + 1});
     }
   }
-  return deepest;
+  return shape;
 }
 
 const json* find_key(const json& object, const char* key) {
@@ -115,10 +130,12 @@ bool preflight(Context& ctx, Container& container, json& doc) {
   doc = json::parse(container.json_text.begin(), container.json_text.end(), nullptr, false);
   if (doc.is_discarded()) return ctx.fail("JSON", "not well-formed JSON");
   if (!doc.is_object()) return ctx.fail("JSON", "the root is not an object");
-  const int depth = json_depth(doc);
-  if (depth > ctx.limits.max_json_depth)
-    return ctx.fail("JSON", "nested " + std::to_string(depth) + " levels deep (limit " +
+  const JsonShape shape = json_shape(doc);
+  if (shape.depth > ctx.limits.max_json_depth)
+    return ctx.fail("JSON", "nested " + std::to_string(shape.depth) + " levels deep (limit " +
                                 std::to_string(ctx.limits.max_json_depth) + ")");
+  if (shape.number_out_of_range)
+    return ctx.fail("JSON", "a number out of range for any glTF property (above 2^32, or 1e15 for decimals)");
   if (const json* buffers = find_key(doc, "buffers")) {
     if (!buffers->is_array()) return ctx.fail("buffers", "not an array");
     for (std::size_t i = 0; i < buffers->size(); ++i) {

@@ -9,9 +9,11 @@
 // extensions natively). `simd_available()` says whether this build has the SIMD loop; a job asking
 // for SIMD where it is absent runs the scalar loop.
 //
-// Contract (checked by validate(), except the joint indices): every joint index < joint_count —
-// the loader guarantees it, and a per-frame check would cost as much as the skinning; outputs do
-// not overlap the inputs (the SIMD loop writes 4 floats per vertex ahead of the next vertex).
+// Contract (checked by validate(), except the joint indices and weights, which the loader
+// guarantees — a per-frame check would cost as much as the skinning): weights >= 0 summing to 1
+// (a vertex with w.x == 1 is skinned by one matrix, w.z == w.w == 0 by two), every joint index
+// < joint_count; outputs do not overlap the inputs (the SIMD loop writes 4 floats per vertex,
+// the 4th overwritten by the next vertex).
 // Does NOT: normalise normals (shader does), use the inverse-transpose for non-uniform scale
 // (joints of a humanoid rig are rigid or uniformly scaled), or skin tangents.
 #pragma once

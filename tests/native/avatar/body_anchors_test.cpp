@@ -13,13 +13,13 @@
 
 #include "avatar/gltf_loader.h"
 #include "skeleton/humanoid_names.h"
-#include "test_humanoid.h"
+#include "avatar/synthetic_avatar.h"
 
 namespace sw::avatar {
 namespace {
 
 Avatar load_synthetic() {
-  const std::vector<std::uint8_t> glb = test::make_humanoid_glb();
+  const std::vector<std::uint8_t> glb = make_synthetic_avatar_glb();
   LoadResult r = load_avatar(glb.data(), glb.size());
   EXPECT_TRUE(r.ok()) << r.message();
   r.avatar.anchors = compute_body_anchors(r.avatar);

@@ -13,22 +13,19 @@
 #include <gtest/gtest.h>
 
 #include "skeleton/humanoid_names.h"
-#include "test_humanoid.h"
+#include "avatar/synthetic_avatar.h"
 
 namespace sw::avatar {
 namespace {
 
-using sw::test::HumanoidOptions;
-using sw::test::make_humanoid_glb;
-using sw::test::make_humanoid_model;
-using sw::test::to_glb;
+using HumanoidOptions = SyntheticAvatarOptions;
 
 LoadResult load(const std::vector<std::uint8_t>& bytes) { return load_avatar(bytes.data(), bytes.size()); }
 
 int joint_of(const Avatar& a, int canonical) { return a.canonical_to_joint[static_cast<std::size_t>(canonical)]; }
 
 TEST(GltfLoader, LoadsTheSyntheticHumanoid) {
-  const LoadResult r = load(make_humanoid_glb());
+  const LoadResult r = load(make_synthetic_avatar_glb());
   ASSERT_TRUE(r.ok()) << r.message();
   const Avatar& a = r.avatar;
   EXPECT_EQ(a.skeleton.joint_count(), 6 + 2 * 28 + 8);
@@ -63,7 +60,7 @@ TEST(GltfLoader, LoadsTheSyntheticHumanoid) {
 }
 
 TEST(GltfLoader, MergesMorphTargetsByNameAcrossMeshes) {
-  const LoadResult r = load(make_humanoid_glb());
+  const LoadResult r = load(make_synthetic_avatar_glb());
   ASSERT_TRUE(r.ok()) << r.message();
   const Avatar& a = r.avatar;
   ASSERT_EQ(a.morphs.size(), 2u);
@@ -89,7 +86,7 @@ TEST(GltfLoader, MergesMorphTargetsByNameAcrossMeshes) {
 TEST(GltfLoader, MapsMixamoNames) {
   HumanoidOptions options;
   options.names = HumanoidOptions::Names::Mixamo;
-  const LoadResult r = load(make_humanoid_glb(options));
+  const LoadResult r = load(make_synthetic_avatar_glb(options));
   ASSERT_TRUE(r.ok()) << r.message();
   const int forearm = joint_of(r.avatar, skeleton::kLeftLowerArm);
   ASSERT_GE(forearm, 0);
@@ -101,8 +98,8 @@ TEST(GltfLoader, MapsMixamoNames) {
 TEST(GltfLoader, MapsThroughTheVrm1HumanoidExtension) {
   HumanoidOptions options;
   options.names = HumanoidOptions::Names::Vrm1Extension;  // node names are "bone_<n>"
-  const tinygltf::Model model = make_humanoid_model(options);
-  const LoadResult r = load(to_glb(model));
+  const tinygltf::Model model = make_synthetic_avatar_model(options);
+  const LoadResult r = load(synthetic_avatar_to_glb(model));
   ASSERT_TRUE(r.ok()) << r.message();
   const int hand = joint_of(r.avatar, skeleton::kLeftHand);
   ASSERT_GE(hand, 0);
@@ -114,7 +111,7 @@ TEST(GltfLoader, MapsThroughTheVrm1HumanoidExtension) {
 TEST(GltfLoader, RejectsAModelWithoutRequiredJointsNamingThem) {
   HumanoidOptions options;
   options.omit_joints = {"leftThumbDistal", "rightIndexIntermediate"};
-  const LoadResult r = load(make_humanoid_glb(options));
+  const LoadResult r = load(make_synthetic_avatar_glb(options));
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.message().find("leftThumbDistal"), std::string::npos) << r.message();
   EXPECT_NE(r.message().find("rightIndexIntermediate"), std::string::npos) << r.message();
@@ -126,8 +123,8 @@ TEST(GltfLoader, RejectsAModelWithoutRequiredJointsNamingThem) {
 TEST(GltfLoader, ComputesNormalsWhenAbsent) {
   HumanoidOptions options;
   options.normals = false;
-  const LoadResult with = load(make_humanoid_glb());
-  const LoadResult without = load(make_humanoid_glb(options));
+  const LoadResult with = load(make_synthetic_avatar_glb());
+  const LoadResult without = load(make_synthetic_avatar_glb(options));
   ASSERT_TRUE(without.ok()) << without.message();
   ASSERT_EQ(with.avatar.mesh.normals.size(), without.avatar.mesh.normals.size());
   // Computed normals are unit and point the same way as the analytic ones almost everywhere
@@ -143,7 +140,7 @@ TEST(GltfLoader, ComputesNormalsWhenAbsent) {
 TEST(GltfLoader, LoadsGltfTextWithEmbeddedBuffers) {
   tinygltf::TinyGLTF writer;
   std::ostringstream out;
-  const tinygltf::Model model = make_humanoid_model();
+  const tinygltf::Model model = make_synthetic_avatar_model();
   ASSERT_TRUE(writer.WriteGltfSceneToStream(&model, out, false, false));
   const std::string text = out.str();
   ASSERT_NE(text.find("data:application/octet-stream;base64,"), std::string::npos);
@@ -229,9 +226,9 @@ TEST(GltfLoader, MalformedModelCatalogueGivesErrorsNotCrashes) {
       {"no mesh", [](auto& m) { for (auto& n : m.nodes) n.mesh = -1; }, "mesh"},
   };
   for (const MalformedCase& c : cases) {
-    tinygltf::Model model = make_humanoid_model();
+    tinygltf::Model model = make_synthetic_avatar_model();
     c.mutate(model);
-    const LoadResult r = load(to_glb(model));
+    const LoadResult r = load(synthetic_avatar_to_glb(model));
     EXPECT_FALSE(r.ok()) << c.name;
     EXPECT_NE(r.message().find(c.expected), std::string::npos) << c.name << ": " << r.message();
     EXPECT_TRUE(r.avatar.skeleton.joints.empty() && r.avatar.mesh.positions.empty()) << c.name;
@@ -257,7 +254,7 @@ std::vector<std::uint8_t> with_json(const std::string& json, const std::vector<s
 }
 
 TEST(GltfLoader, MalformedContainerCatalogue) {
-  const std::vector<std::uint8_t> good = make_humanoid_glb();
+  const std::vector<std::uint8_t> good = make_synthetic_avatar_glb();
   struct Case { const char* name; std::vector<std::uint8_t> bytes; const char* expected; };
   std::vector<Case> cases;
   cases.push_back({"empty", {}, "empty"});
@@ -279,7 +276,9 @@ TEST(GltfLoader, MalformedContainerCatalogue) {
   cases.push_back({"JSON nested 10000 deep", with_json("{\"asset\":{\"version\":\"2.0\"},\"extras\":" +
                                                           std::string(10000, '[') + std::string(10000, ']') + "}"), "nested"});
   cases.push_back({"buffer byteLength 0", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":0}]}", {1, 2, 3, 4}), "byteLength"});
-  cases.push_back({"buffer byteLength huge", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":1e300}]}", {1, 2, 3, 4}), "byteLength"});
+  cases.push_back({"buffer byteLength huge", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":1e300}]}", {1, 2, 3, 4}), "out of range"});
+  cases.push_back({"accessor count 2^40", with_json("{\"asset\":{\"version\":\"2.0\"},\"accessors\":[{\"count\":1099511627776,\"componentType\":5126,\"type\":\"VEC3\"}]}"), "out of range"});
+  cases.push_back({"negative node index", with_json("{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[-5000000000]}]}"), "out of range"});
   cases.push_back({"buffer larger than BIN", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":400}]}", {1, 2, 3, 4}), "byteLength"});
   cases.push_back({"buffer without BIN chunk", with_json("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4}]}"), "BIN"});
   cases.push_back({"empty image data", with_json("{\"asset\":{\"version\":\"2.0\"},\"images\":[{\"uri\":\"data:image/png;base64,\"}],\"nodes\":[{}]}"), "skin"});
@@ -296,7 +295,7 @@ TEST(GltfLoader, MalformedContainerCatalogue) {
 TEST(GltfLoader, SurvivesRandomByteCorruption) {
   // Deterministic fuzzing: flip bytes all over a valid file (header, JSON, BIN); every result
   // must be a value. ASan/UBSan make any out-of-bounds read in here a failure.
-  const std::vector<std::uint8_t> good = make_humanoid_glb();
+  const std::vector<std::uint8_t> good = make_synthetic_avatar_glb();
   std::mt19937 rng(1234);
   int errors = 0;
   for (int round = 0; round < 300; ++round) {

@@ -6,7 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
-#include "../avatar/test_humanoid.h"
+#include "avatar/synthetic_avatar.h"
 #include "avatar/gltf_loader.h"
 #include "skeleton/humanoid_names.h"
 
@@ -14,7 +14,7 @@ namespace sw::skinning {
 namespace {
 
 avatar::Avatar load_humanoid() {
-  const std::vector<std::uint8_t> glb = test::make_humanoid_glb();
+  const std::vector<std::uint8_t> glb = avatar::make_synthetic_avatar_glb();
   avatar::LoadResult r = avatar::load_avatar(glb.data(), glb.size());
   EXPECT_TRUE(r.ok()) << r.message();
   return r.avatar;

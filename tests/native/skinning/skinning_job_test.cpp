@@ -7,7 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
-#include "../avatar/test_humanoid.h"
+#include "avatar/synthetic_avatar.h"
 #include "avatar/gltf_loader.h"
 #include "skeleton/humanoid_names.h"
 #include "skeleton/local_to_model.h"
@@ -18,7 +18,7 @@ namespace {
 
 const avatar::Avatar& humanoid() {
   static const avatar::Avatar a = [] {
-    const std::vector<std::uint8_t> glb = test::make_humanoid_glb();
+    const std::vector<std::uint8_t> glb = avatar::make_synthetic_avatar_glb();
     avatar::LoadResult r = avatar::load_avatar(glb.data(), glb.size());
     EXPECT_TRUE(r.ok()) << r.message();
     return r.avatar;

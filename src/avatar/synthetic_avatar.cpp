@@ -1,5 +1,5 @@
-// The synthetic test humanoid. See test_humanoid.h.
-#include "test_humanoid.h"
+// The synthetic avatar. See synthetic_avatar.h.
+#include "avatar/synthetic_avatar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <map>
 #include <sstream>
 
-namespace sw::test {
+namespace sw::avatar {
 namespace {
 
 struct JointSpec {
@@ -203,7 +203,7 @@ void add_mesh(tinygltf::Model& model, const MeshBuilder& m, int material, const 
 
 }  // namespace
 
-tinygltf::Model make_humanoid_model(const HumanoidOptions& options) {
+tinygltf::Model make_synthetic_avatar_model(const SyntheticAvatarOptions& options) {
   std::vector<JointSpec> specs = joint_specs();
   // Drop omitted joints and their subtrees.
   std::vector<std::string> dropped = options.omit_joints;
@@ -230,8 +230,8 @@ tinygltf::Model make_humanoid_model(const HumanoidOptions& options) {
   std::map<std::string, glm::vec3> pos_of;
   for (const JointSpec& s : specs) {
     tinygltf::Node node;
-    node.name = options.names == HumanoidOptions::Names::Mixamo ? "mixamorig:" + s.mixamo : s.canonical;
-    if (options.names == HumanoidOptions::Names::Vrm1Extension) node.name = "bone_" + std::to_string(model.nodes.size());
+    node.name = options.names == SyntheticAvatarOptions::Names::Mixamo ? "mixamorig:" + s.mixamo : s.canonical;
+    if (options.names == SyntheticAvatarOptions::Names::Vrm1Extension) node.name = "bone_" + std::to_string(model.nodes.size());
     const glm::vec3 parent_pos = s.parent.empty() ? glm::vec3(0.0f) : pos_of[s.parent];
     const glm::vec3 local = s.position - parent_pos;
     node.translation = {local.x, local.y, local.z};
@@ -274,19 +274,19 @@ tinygltf::Model make_humanoid_model(const HumanoidOptions& options) {
 
   MeshBuilder body, clothes;
   // Head and neck (skin).
-  const glm::vec3 head_centre(0.0f, HumanoidGeometry::kHeadCentreY, 0.01f);
-  body.ellipsoid(head_centre, {0.08f, 0.11f, HumanoidGeometry::kHeadRadiusZ}, J("head"));
+  const glm::vec3 head_centre(0.0f, SyntheticAvatarGeometry::kHeadCentreY, 0.01f);
+  body.ellipsoid(head_centre, {0.08f, 0.11f, SyntheticAvatarGeometry::kHeadRadiusZ}, J("head"));
   body.tube({0.0f, 1.43f, 0.0f}, {0.0f, 1.58f, 0.0f}, 0.05f, 0.05f, {0, 0, 1}, J("neck"));
   // Torso (clothes), one tube per spine segment.
   const char* spine[] = {"hips", "spine", "chest", "upperChest"};
   const float spine_y[] = {0.85f, 1.05f, 1.20f, 1.32f, 1.46f};
   for (int k = 0; k < 4; ++k) {
     if (!has(spine[k])) continue;
-    clothes.tube({0.0f, spine_y[k], 0.0f}, {0.0f, spine_y[k + 1], 0.0f}, HumanoidGeometry::kTorsoRadiusX,
-                 HumanoidGeometry::kTorsoRadiusZ, {1, 0, 0}, J(spine[k]), k < 3 && has(spine[k + 1]) ? J(spine[k + 1]) : -1);
+    clothes.tube({0.0f, spine_y[k], 0.0f}, {0.0f, spine_y[k + 1], 0.0f}, SyntheticAvatarGeometry::kTorsoRadiusX,
+                 SyntheticAvatarGeometry::kTorsoRadiusZ, {1, 0, 0}, J(spine[k]), k < 3 && has(spine[k + 1]) ? J(spine[k + 1]) : -1);
   }
   // The shoulder yoke closes the torso's top.
-  if (has("upperChest")) clothes.ellipsoid({0.0f, 1.46f, 0.0f}, {HumanoidGeometry::kTorsoRadiusX, 0.03f, HumanoidGeometry::kTorsoRadiusZ}, J("upperChest"));
+  if (has("upperChest")) clothes.ellipsoid({0.0f, 1.46f, 0.0f}, {SyntheticAvatarGeometry::kTorsoRadiusX, 0.03f, SyntheticAvatarGeometry::kTorsoRadiusZ}, J("upperChest"));
   for (const std::string side : {"left", "right"}) {
     if (has(side + "UpperArm") && has(side + "LowerArm"))
       clothes.tube(P(side + "UpperArm"), P(side + "LowerArm"), 0.045f, 0.045f, {0, 1, 0}, J(side + "UpperArm"), J(side + "LowerArm"));
@@ -330,7 +330,7 @@ tinygltf::Model make_humanoid_model(const HumanoidOptions& options) {
   add_mesh(model, body, 0, "body", body_targets, options.normals, 0);
   add_mesh(model, clothes, 1, "clothes", cloth_targets, options.normals, 0);
 
-  if (options.names == HumanoidOptions::Names::Vrm1Extension) {
+  if (options.names == SyntheticAvatarOptions::Names::Vrm1Extension) {
     tinygltf::Value::Object bones;
     for (const JointSpec& s : specs) {
       if (s.canonical.find("Tip") != std::string::npos) continue;  // tips are not VRM bones
@@ -349,7 +349,7 @@ tinygltf::Model make_humanoid_model(const HumanoidOptions& options) {
   return model;
 }
 
-std::vector<std::uint8_t> to_glb(const tinygltf::Model& model) {
+std::vector<std::uint8_t> synthetic_avatar_to_glb(const tinygltf::Model& model) {
   tinygltf::TinyGLTF writer;
   std::ostringstream out;
   writer.WriteGltfSceneToStream(&model, out, false, true);
@@ -357,11 +357,11 @@ std::vector<std::uint8_t> to_glb(const tinygltf::Model& model) {
   return std::vector<std::uint8_t>(s.begin(), s.end());
 }
 
-std::vector<std::uint8_t> make_humanoid_glb(const HumanoidOptions& options) {
-  return to_glb(make_humanoid_model(options));
+std::vector<std::uint8_t> make_synthetic_avatar_glb(const SyntheticAvatarOptions& options) {
+  return synthetic_avatar_to_glb(make_synthetic_avatar_model(options));
 }
 
-int humanoid_node(const tinygltf::Model& model, const std::string& canonical_name) {
+int synthetic_avatar_node(const tinygltf::Model& model, const std::string& canonical_name) {
   // Nodes are written in joint_specs() order, so find the spec index among kept joints by name;
   // names differ per naming option, so match through the canonical spec list.
   const std::vector<JointSpec> specs = joint_specs();
@@ -375,4 +375,4 @@ int humanoid_node(const tinygltf::Model& model, const std::string& canonical_nam
   return -1;
 }
 
-}  // namespace sw::test
+}  // namespace sw::avatar
