@@ -1,6 +1,7 @@
 // Avatar mesh pipeline; see avatar_mesh.h.
 #include "avatar_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -25,6 +26,7 @@ const char* material_name(Material material) {
     case Material::kEyeWhite: return "eyeWhite";
     case Material::kIris: return "iris";
     case Material::kTongue: return "tongue";
+    case Material::kTeeth: return "teeth";
     case Material::kCount: break;
   }
   return "unknown";
@@ -87,8 +89,8 @@ void add_tongue(const HumanoidLayout& layout, std::vector<MeshPiece>& pieces) {
   tongue.material = Material::kTongue;
   tongue.rigid_joint = layout.find("jaw");
   tongue.face = true;
-  const glm::vec3 centre(0.0f, kMouthY - 0.0045f, 0.070f);
-  const glm::vec3 radii(0.018f, 0.0040f, 0.026f);
+  const glm::vec3 centre(0.0f, kMouthY - 0.0050f, 0.056f);
+  const glm::vec3 radii(0.0150f, 0.0040f, 0.020f);
   constexpr int kRings = 8, kSegments = 14;
   for (int r = 0; r <= kRings; ++r) {
     const float theta = kPi * static_cast<float>(r) / kRings;
@@ -136,6 +138,110 @@ void optimise_for_gpu(MeshPiece& piece) {
   piece.nearest_primitive.swap(nearest);
 }
 
+// Per-triangle materials on a 1.5 mm grid give staircase edges (hairline, cuffs, lips). Smoothing
+// the vertices where materials meet along their own band, then pulling them back onto the
+// surface (Newton steps along the field gradient), turns the staircase into a smooth line
+// without changing the shape; the triangles keep their materials.
+void straighten_material_seams(const ImplicitBody& body, const std::vector<std::uint32_t>& indices,
+                               const std::vector<int>& triangle_key,
+                               std::vector<glm::vec3>& positions) {
+  const size_t n = positions.size();
+  std::vector<int> first_key(n, -1);
+  std::vector<char> seam(n, 0);
+  for (size_t t = 0; t < triangle_key.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = indices[3 * t + static_cast<size_t>(c)];
+      if (first_key[v] < 0) first_key[v] = triangle_key[t];
+      else if (first_key[v] != triangle_key[t]) seam[v] = 1;
+    }
+  std::map<std::uint32_t, std::vector<std::uint32_t>> neighbours;
+  for (size_t t = 0; t < triangle_key.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t a = indices[3 * t + static_cast<size_t>(c)];
+      const std::uint32_t b = indices[3 * t + static_cast<size_t>((c + 1) % 3)];
+      if (!seam[a] || !seam[b]) continue;
+      neighbours[a].push_back(b);
+      neighbours[b].push_back(a);
+    }
+  for (auto& [v, list] : neighbours) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  std::vector<int> all(body.primitives().size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    std::vector<std::pair<std::uint32_t, glm::vec3>> moved;
+    moved.reserve(neighbours.size());
+    for (const auto& [v, list] : neighbours) {
+      glm::vec3 mean(0.0f);
+      for (std::uint32_t u : list) mean += positions[u];
+      mean /= static_cast<float>(list.size());
+      moved.emplace_back(v, 0.5f * positions[v] + 0.5f * mean);
+    }
+    for (const auto& [v, p] : moved) positions[v] = p;
+  }
+  for (const auto& [v, list] : neighbours) {
+    const std::vector<int> near =
+        body.primitives_near(positions[v] - glm::vec3(0.01f), positions[v] + glm::vec3(0.01f),
+                             body.cull_margin() * 2.0f);
+    for (int step = 0; step < 3; ++step) {
+      const float d = body.sample(positions[v], near).distance;
+      positions[v] -= d * body.gradient(positions[v], near, 0.0003f);
+    }
+  }
+}
+
+// Teeth: upper and lower dental arches as curved bands just behind the lips, inside the mouth
+// cavity (implicit_body.cpp); the upper row rides on the head, the lower on the jaw. Seen only
+// when the mouth opens (visemes, jawOpen), where they make the mouth read as a mouth.
+void add_teeth(const HumanoidLayout& layout, std::vector<MeshPiece>& pieces) {
+  for (int row = 0; row < 2; ++row) {
+    const bool upper = row == 0;
+    MeshPiece teeth;
+    teeth.material = Material::kTeeth;
+    teeth.rigid_joint = layout.find(upper ? "head" : "jaw");
+    teeth.face = true;
+    const float arch_radius = upper ? 0.0235f : 0.0220f;  // the lower arch sits inside the upper
+    const glm::vec3 arch_centre(0.0f, 0.0f, 0.0540f);
+    const float y_edge = kMouthY + (upper ? 0.0018f : -0.0020f);  // biting edge, off the slit
+    const float y_root = kMouthY + (upper ? 0.0095f : -0.0085f);
+    const float thickness = 0.0045f;
+    constexpr int kSteps = 16;
+    const float sweep = 1.05f;  // radians each side of the midline: incisors to premolars
+    // Four corners of the cross-section (outer edge, outer root, inner root, inner edge).
+    for (int i = 0; i <= kSteps; ++i) {
+      const float a = -sweep + 2.0f * sweep * static_cast<float>(i) / kSteps;
+      const glm::vec3 out(std::sin(a), 0.0f, std::cos(a));
+      const glm::vec3 corners[4] = {
+          arch_centre + out * arch_radius + glm::vec3(0, y_edge, 0),
+          arch_centre + out * arch_radius + glm::vec3(0, y_root, 0),
+          arch_centre + out * (arch_radius - thickness) + glm::vec3(0, y_root, 0),
+          arch_centre + out * (arch_radius - thickness) + glm::vec3(0, y_edge, 0)};
+      const glm::vec3 up(0.0f, upper ? 1.0f : -1.0f, 0.0f);
+      const glm::vec3 normals[4] = {glm::normalize(out - 0.3f * up), glm::normalize(out + 0.3f * up),
+                                    glm::normalize(-out + 0.3f * up), glm::normalize(-out - 0.3f * up)};
+      for (int c = 0; c < 4; ++c) {
+        teeth.positions.push_back(corners[c]);
+        teeth.normals.push_back(normals[c]);
+        teeth.nearest_primitive.push_back(-1);
+      }
+    }
+    for (int i = 0; i < kSteps; ++i)
+      for (int c = 0; c < 4; ++c) {
+        const auto a = static_cast<std::uint32_t>(4 * i + c);
+        const auto b = static_cast<std::uint32_t>(4 * i + (c + 1) % 4);
+        const std::uint32_t a2 = a + 4, b2 = b + 4;
+        // Winding chosen per row so the faces point out of the band (the rows mirror in y).
+        if (upper) {
+          teeth.indices.insert(teeth.indices.end(), {a, a2, b, b, a2, b2});
+        } else {
+          teeth.indices.insert(teeth.indices.end(), {a, b, a2, b, b2, a2});
+        }
+      }
+    pieces.push_back(teeth);
+  }
+}
+
 }  // namespace
 
 std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const HumanoidLayout& layout,
@@ -145,6 +251,7 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
   add_eyeball(layout.position("leftEye"), layout.find("leftEye"), pieces);
   add_eyeball(layout.position("rightEye"), layout.find("rightEye"), pieces);
   add_tongue(layout, pieces);
+  add_teeth(layout, pieces);
   std::size_t fixed_triangles = 0;
   for (const MeshPiece& piece : pieces) fixed_triangles += piece.indices.size() / 3;
 
@@ -172,6 +279,9 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
     triangle_surface[t] = key;
   }
 
+  std::vector<glm::vec3> raw_positions = raw.positions;
+  straighten_material_seams(body, raw.indices, triangle_surface, raw_positions);
+
   // Duplicate every vertex once per material that uses it: the material boundaries become
   // seams (same position, different vertex), which meshopt_simplify preserves.
   std::vector<glm::vec3> positions;
@@ -185,7 +295,7 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
       auto found = split.find(key);
       if (found == split.end()) {
         found = split.emplace(key, static_cast<std::uint32_t>(positions.size())).first;
-        positions.push_back(raw.positions[v]);
+        positions.push_back(raw_positions[v]);
         nearest.push_back(raw.nearest_primitive[v]);
         surface.push_back(triangle_surface[t]);
       }

@@ -19,7 +19,7 @@ namespace sw::avatar_generator {
 // Materials of the exported model: the body surfaces, then the separate meshes.
 enum class Material : int {
   kSkin = 0, kTop, kTrousers, kShoes, kHair, kLips, kBrows, kMouthInner,
-  kEyeWhite, kIris, kTongue, kCount
+  kEyeWhite, kIris, kTongue, kTeeth, kCount
 };
 const char* material_name(Material material);
 

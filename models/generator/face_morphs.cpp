@@ -81,9 +81,12 @@ float corner(glm::vec3 p, float side) {
   return bump(p, {side * 0.025f, kMouthY, 0.090f}, {0.016f, 0.014f});
 }
 
-glm::vec3 jaw_open(const HumanoidLayout& layout, glm::vec3 p, float amount) {
-  // 0.30 rad opens about 28 mm between the incisors (hinge to lips about 95 mm).
-  const float angle = 0.30f * amount * jaw_mask(p);
+glm::vec3 jaw_open(const HumanoidLayout& layout, glm::vec3 p, Material material, float amount) {
+  // 0.30 rad opens about 28 mm between the incisors (hinge to lips about 95 mm). Teeth and
+  // tongue are rigid: all of the lower row and the tongue turn with the jaw, the upper row not.
+  const bool rigid = material == Material::kTongue || material == Material::kTeeth;
+  const float mask = rigid ? (p.y < kMouthY ? 1.0f : 0.0f) : jaw_mask(p);
+  const float angle = 0.30f * amount * mask;
   return rotate_about_x(p, layout.position("jaw"), angle) - p;
 }
 
@@ -122,7 +125,8 @@ struct MouthMix {
 };
 
 glm::vec3 mouth(const HumanoidLayout& layout, glm::vec3 p, Material material, const MouthMix& m) {
-  glm::vec3 d = jaw_open(layout, p, m.jaw);
+  glm::vec3 d = jaw_open(layout, p, material, m.jaw);
+  if (material == Material::kTeeth) return d;
   d += m.pucker * pucker(p) + m.stretch * stretch(p) + m.press * press(p) +
        m.smile * 0.5f * (smile(p, 1.0f) + smile(p, -1.0f)) + m.upper_up * upper_up(p) +
        m.lower_down * lower_down(p) + m.tuck * lip_tuck(p) + m.tongue * tongue_out(p, material);
@@ -142,8 +146,8 @@ glm::vec3 face_morph_delta(const HumanoidLayout& layout, int channel, glm::vec3 
                            Material material) {
   if (!in_face_region(p)) return glm::vec3(0.0f);
   const std::string name = face_morph_names()[static_cast<size_t>(channel)];
-  const bool is_tongue = material == Material::kTongue;
-  if (is_tongue && name != "tongueOut" && name.rfind("viseme_", 0) != 0 && name != "jawOpen")
+  const bool rigid = material == Material::kTongue || material == Material::kTeeth;
+  if (rigid && name != "tongueOut" && name.rfind("viseme_", 0) != 0 && name != "jawOpen")
     return glm::vec3(0.0f);
   const float hair = below_hairline(p);
   auto side_of = [&](const std::string& n) { return n.find("Right") != std::string::npos ? -1.0f : 1.0f; };
@@ -193,7 +197,7 @@ glm::vec3 face_morph_delta(const HumanoidLayout& layout, int channel, glm::vec3 
   if (name == "mouthPucker") return pucker(p);
   if (name == "mouthPress") return press(p);
   if (name == "mouthLowerDown") return lower_down(p);
-  if (name == "jawOpen") return jaw_open(layout, p, 1.0f);
+  if (name == "jawOpen") return jaw_open(layout, p, material, 1.0f);
   if (name == "tongueOut") return tongue_out(p, material);
 
   // Visemes (Oculus set): mixes of the mouth shapes above.

@@ -36,6 +36,7 @@ MaterialLook look(Material m) {
     case Material::kEyeWhite: return {{0.93f, 0.92f, 0.89f}, 0.2f};
     case Material::kIris: return {{0.22f, 0.14f, 0.09f}, 0.15f};
     case Material::kTongue: return {{0.76f, 0.38f, 0.40f}, 0.45f};
+    case Material::kTeeth: return {{0.92f, 0.90f, 0.84f}, 0.3f};
     case Material::kCount: break;
   }
   return {{1, 0, 1}, 1};
@@ -59,10 +60,12 @@ void export_avatar(const ExportModel& model, GlbBuilder& glb) {
                   {"generator", "Signweave avatar-generator (models/generator)"},
                   {"copyright", "Signweave project; generated, no third-party assets"}};
 
-  // Node 0: the scene root; nodes 1..J: the joints; then the mesh nodes.
+  // Nodes 0..J-1: the joints (the hips is a scene root); then the mesh nodes, also scene roots
+  // (a skinned mesh node's own transform is ignored, glTF 2.0 §3.7.3.1). No wrapper node: the
+  // skeleton's root is the hips, nothing above it.
   nlohmann::json nodes = nlohmann::json::array();
-  nodes.push_back({{"name", "Signweave"}, {"children", nlohmann::json::array()}});
-  const int joint_base = 1;
+  nlohmann::json scene_roots = nlohmann::json::array();
+  const int joint_base = 0;
   for (size_t j = 0; j < layout.joints.size(); ++j) {
     const LayoutJoint& joint = layout.joints[j];
     const glm::vec3 parent_position =
@@ -74,7 +77,7 @@ void export_avatar(const ExportModel& model, GlbBuilder& glb) {
       nodes[static_cast<size_t>(joint_base + joint.parent)]["children"].push_back(joint_base +
                                                                                  static_cast<int>(j));
     else
-      nodes[0]["children"].push_back(joint_base + static_cast<int>(j));
+      scene_roots.push_back(joint_base + static_cast<int>(j));
   }
 
   // Skin: inverse bind = translate(-bind position) since bind rotations are identity.
@@ -154,13 +157,13 @@ void export_avatar(const ExportModel& model, GlbBuilder& glb) {
     meshes.push_back(mesh);
     const int mesh_index = static_cast<int>(meshes.size()) - 1;
     nodes.push_back({{"name", name}, {"mesh", mesh_index}, {"skin", 0}});
-    nodes[0]["children"].push_back(static_cast<int>(nodes.size()) - 1);
+    scene_roots.push_back(static_cast<int>(nodes.size()) - 1);
   };
   add_mesh("body", model.body_pieces, false);
   add_mesh("face", model.face_pieces, !model.morph_names.empty());
   doc["meshes"] = meshes;
   doc["nodes"] = nodes;
-  doc["scenes"] = nlohmann::json::array({{{"name", "Signweave"}, {"nodes", {0}}}});
+  doc["scenes"] = nlohmann::json::array({{{"name", "Signweave"}, {"nodes", scene_roots}}});
   doc["scene"] = 0;
 
   // VRMC_vrm 1.0: the humanoid mapping (and the minimal required meta).

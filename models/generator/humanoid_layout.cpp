@@ -1,7 +1,7 @@
 // Humanoid layout: anthropometric joint positions of the Signweave avatar (see humanoid_layout.h
 // for the bind-pose convention). Figures are adult averages rounded to millimetres: stature
-// 1.70 m, hip joint at 0.53 of stature, knee at 0.285, shoulder joint 1.415 m, upper arm 0.285 m,
-// forearm 0.25 m, hand 0.19 m (wrist centre to middle fingertip), hand breadth at the knuckles
+// 1.70 m, hip joint at 0.53 of stature, knee at 0.285, upper arm 0.285 m,
+// forearm 0.25 m, shoulder joint 1.39 m, hand 0.19 m (wrist centre to middle fingertip), hand breadth at the knuckles
 // about 0.08 m, phalanx ratios proximal : intermediate : distal about 1 : 0.6 : 0.48.
 #include "humanoid_layout.h"
 
@@ -76,10 +76,11 @@ HumanoidLayout make_signweave_layout() {
     const float side = s == 0 ? 1.0f : -1.0f;  // left = +X
     const std::string p = s == 0 ? "left" : "right";
     auto m = [side](glm::vec3 v) { return glm::vec3(side * v.x, v.y, v.z); };
-    b.add(p + "Shoulder", "upperChest", m({0.022f, 1.395f, 0.010f}));
-    b.add(p + "UpperArm", p + "Shoulder", m({0.175f, 1.415f, -0.005f}));
-    b.add(p + "LowerArm", p + "UpperArm", m({0.460f, 1.415f, -0.005f}));
-    const glm::vec3 wrist{0.710f, 1.415f, -0.005f};
+    // Glenohumeral centre about 3 cm below the acromion (acromial height 0.82 of stature).
+    b.add(p + "Shoulder", "upperChest", m({0.022f, 1.380f, 0.010f}));
+    b.add(p + "UpperArm", p + "Shoulder", m({0.175f, 1.392f, -0.005f}));
+    b.add(p + "LowerArm", p + "UpperArm", m({0.460f, 1.392f, -0.005f}));
+    const glm::vec3 wrist{0.710f, 1.392f, -0.005f};
     b.add(p + "Hand", p + "LowerArm", m(wrist));
 
     // Thumb: CMC joint on the palm side near the wrist; the flat-hand thumb points about 45°

@@ -128,7 +128,7 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   blob(torso, {0.0f, 0.950f, -0.008f}, {0.160f, 0.105f, 0.105f}, Surface::kTrousers, hips, spine);
   blob(torso, {0.0f, 1.070f, 0.000f}, {0.135f, 0.110f, 0.098f}, Surface::kTop, spine, chest);
   blob(torso, {0.0f, 1.235f, 0.000f}, {0.150f, 0.150f, 0.105f}, Surface::kTop, chest, upper_chest);
-  cone(torso, {-0.135f, 1.370f, -0.015f}, {0.135f, 1.370f, -0.015f}, 0.060f, 0.060f, Surface::kTop,
+  cone(torso, {-0.130f, 1.360f, -0.015f}, {0.130f, 1.360f, -0.015f}, 0.058f, 0.058f, Surface::kTop,
        upper_chest, neck);
   for (float side : {1.0f, -1.0f}) {
     blob(torso, {side * 0.070f, 0.900f, -0.055f}, {0.085f, 0.095f, 0.070f}, Surface::kTrousers,
@@ -167,7 +167,7 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   cone(nose_part, {0.0f, 1.606f, 0.090f}, {0.0f, 1.566f, 0.116f}, 0.0070f, 0.0105f, Surface::kSkin,
        head, -1);
   for (float side : {1.0f, -1.0f})
-    blob(nose_part, {side * 0.0135f, 1.562f, 0.102f}, {0.0085f, 0.0075f, 0.0085f}, Surface::kSkin,
+    blob(nose_part, {side * 0.0125f, 1.563f, 0.101f}, {0.0076f, 0.0068f, 0.0078f}, Surface::kSkin,
          head, -1);
   // Brow ridges: slight, so the brows catch the light.
   const int brow_part = add_part("brows", head_part, 0.010f, 0.006f);
@@ -191,6 +191,10 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   // inner mouth that shows when the jaw opens.
   carve(head_part, {0.0f, mouth_y, 0.082f}, {0.0225f, 0.0014f, 0.030f}, 0.0012f,
         Surface::kMouthInner);
+  // The mouth cavity behind the lips, joined to the slit: room for the teeth and the tongue,
+  // hidden while the lips are together.
+  carve(head_part, {0.0f, mouth_y - 0.0005f, 0.060f}, {0.0190f, 0.0105f, 0.0200f}, 0.003f,
+        Surface::kMouthInner);
   // Eyelids: a skin shell hugging each eyeball (1.2 mm outside it), opened by an almond slit that
   // shows the eyeball (a separate mesh on the eye joint). The slit's rim is the lid margin;
   // the blink morph rotates the upper shell about the eye centre (face_morphs.cpp).
@@ -213,9 +217,10 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
     const int shoulder = bone(p + "Shoulder"), upper_arm = bone(p + "UpperArm"),
               lower_arm = bone(p + "LowerArm"), hand = bone(p + "Hand");
     const int arm = add_part(p + "Arm", torso, 0.045f, 0.035f);
-    blob(arm, J(p + "UpperArm") + glm::vec3(side * -0.005f, 0.008f, 0.0f), {0.062f, 0.056f, 0.058f},
+    // Deltoid: caps the joint without rising above the acromion (about 4 cm over the joint).
+    blob(arm, J(p + "UpperArm") + glm::vec3(side * -0.004f, -0.004f, 0.0f), {0.058f, 0.046f, 0.054f},
          Surface::kTop, shoulder, upper_arm);
-    cone(arm, J(p + "UpperArm"), J(p + "LowerArm"), 0.050f, 0.038f, Surface::kTop, upper_arm,
+    cone(arm, J(p + "UpperArm"), J(p + "LowerArm"), 0.046f, 0.037f, Surface::kTop, upper_arm,
          lower_arm);
     // Forearm: muscular near the elbow, flattened at the wrist (wrist 56 mm wide, 38 mm deep).
     cone(arm, J(p + "LowerArm"), J(p + "LowerArm") + glm::vec3(side * 0.09f, 0.0f, 0.0f), 0.040f,
@@ -304,31 +309,25 @@ SurfaceSample ImplicitBody::sample(glm::vec3 p) const {
 }
 
 SurfaceSample ImplicitBody::sample(glm::vec3 p, const std::vector<int>& active) const {
-  // Small fixed-size scratch: the avatar has a few dozen parts.
+  // Small fixed-size scratch: the avatar has a few dozen parts and a handful of carves.
   constexpr int kMaxParts = 64;
+  constexpr int kMaxCarves = 8;
   float own[kMaxParts];
-  float carve_value[kMaxParts];
-  float carve_k[kMaxParts];
-  int carve_primitive[kMaxParts];
   const int part_count = static_cast<int>(parts_.size());
-  for (int i = 0; i < part_count; ++i) {
-    own[i] = kFar;
-    carve_value[i] = -kFar;
-    carve_k[i] = 0.0f;
-    carve_primitive[i] = -1;
-  }
+  for (int i = 0; i < part_count; ++i) own[i] = kFar;
+  struct CarveHit {
+    int primitive;
+    float value;  // -distance: the subtracted field
+  };
+  CarveHit carves[kMaxCarves];
+  int carve_count = 0;
   SurfaceSample result;
   float nearest = kFar;
   for (int index : active) {
     const ImplicitPrimitive& q = primitives_[static_cast<size_t>(index)];
     const float d = primitive_distance(q, p);
     if (q.carve) {
-      // Subtracting several carves from one part = subtracting their union.
-      if (-d > carve_value[q.part]) {
-        carve_value[q.part] = -d;
-        carve_primitive[q.part] = index;
-      }
-      carve_k[q.part] = std::max(carve_k[q.part], q.carve_k);
+      if (carve_count < kMaxCarves) carves[carve_count++] = {index, -d};
       continue;
     }
     own[q.part] = smooth_min(own[q.part], d, parts_[static_cast<size_t>(q.part)].inner_k);
@@ -337,14 +336,17 @@ SurfaceSample ImplicitBody::sample(glm::vec3 p, const std::vector<int>& active) 
       result.nearest_primitive = index;
     }
   }
-  // Bottom-up: every part blends with its own parent's primitives only (see header).
+  // Bottom-up: every part blends with its own parent's primitives only (see header). Carves are
+  // subtracted one by one, each with its own smoothing, after the part's children joined it.
   float combined[kMaxParts];
   for (int i = 0; i < part_count; ++i) combined[i] = own[i];
   for (int i = part_count - 1; i >= 0; --i) {
-    if (carve_value[i] > -kFar) {
+    for (int c = 0; c < carve_count; ++c) {
+      const ImplicitPrimitive& q = primitives_[static_cast<size_t>(carves[c].primitive)];
+      if (q.part != i) continue;
       // Where the carve shapes the surface, the surface is the carve's (the inside of the mouth).
-      if (carve_value[i] > combined[i] - carve_k[i]) result.nearest_primitive = carve_primitive[i];
-      combined[i] = smooth_max(combined[i], carve_value[i], carve_k[i]);
+      if (carves[c].value > combined[i] - q.carve_k) result.nearest_primitive = carves[c].primitive;
+      combined[i] = smooth_max(combined[i], carves[c].value, q.carve_k);
     }
     const int parent = parts_[static_cast<size_t>(i)].parent;
     if (parent < 0) continue;

@@ -109,6 +109,18 @@ SkinWeights compute_skin_weights(const HumanoidLayout& layout, const ImplicitBod
       total += inv;
     }
     for (int j : list) w[j] /= total;
+    // Shoulder cap: the top of the deltoid hangs from the acromion, so near the shoulder joint the
+    // upper arm's share is reduced in favour of the shoulder (clavicle) — lowering the arm then
+    // rounds the shoulder instead of lifting a point above it.
+    if (part == "leftArm" || part == "rightArm") {
+      const std::string side = part == "leftArm" ? "left" : "right";
+      const int upper_arm = id(side + "UpperArm"), shoulder = id(side + "Shoulder");
+      const float along = std::fabs(p.x) - std::fabs(J(side + "UpperArm").x);
+      const float keep = 0.45f + 0.55f * smoothstep(-0.01f, 0.09f, along);
+      const float moved = w[upper_arm] * (1.0f - keep);
+      w[upper_arm] -= moved;
+      w[shoulder] += moved;
+    }
     if (list.size() == 1 && list[0] == id("head")) {
       const float jaw = jaw_mask(p);
       w[id("head")] = 1.0f - jaw;
