@@ -96,7 +96,8 @@ export class NotationEditor {
       const li = document.createElement('li');
       li.className = d.severity === 'warning' ? 'warning' : 'error';
       const where = `line ${d.line}, column ${d.column}`;
-      li.textContent = `${where}: ${d.message}${d.symbol ? ` ('${d.symbol}')` : ''}`;
+      const symbol = d.symbol && !d.message.includes(d.symbol) ? ` ('${d.symbol}')` : '';
+      li.textContent = `${where}: ${d.message}${symbol}`;
       list.append(li);
     }
     for (const e of result.errors || []) {
