@@ -61,7 +61,6 @@ void skin_scalar(const SkinningJob& job) {
 #if defined(__wasm_simd128__)
 using F4 = v128_t;
 inline F4 load4(const float* p) { return wasm_v128_load(p); }
-inline F4 splat(float x) { return wasm_f32x4_splat(x); }
 inline F4 load_splat(const float* p) { return wasm_v128_load32_splat(p); }  // one instruction
 inline F4 mul(F4 a, F4 b) { return wasm_f32x4_mul(a, b); }
 inline F4 add(F4 a, F4 b) { return wasm_f32x4_add(a, b); }

@@ -88,7 +88,7 @@ void expect_every_anchor_once(const Avatar& a) {
 
 void expect_levels_ordered(const Avatar& a) {
   const std::vector<std::string> top_to_bottom = {"above_head", "head_top", "forehead", "eyebrows", "eyes",
-                                                  "nose", "mouth", "chin", "neck", "shoulders", "chest",
+                                                  "nose", "mouth", "chin", "under_chin", "neck", "shoulders", "chest",
                                                   "stomach", "belly", "waist", "below_waist"};
   const glm::vec3 up(0, 1, 0);
   for (std::size_t i = 0; i + 1 < top_to_bottom.size(); ++i) {
@@ -105,6 +105,14 @@ void expect_levels_ordered(const Avatar& a) {
       previous = x;
     }
   }
+  // The underside of the jaw faces down; shoulders are out beyond the neck.
+  {
+    const Anchor& under = a.anchors[static_cast<std::size_t>(find_anchor(a, "body/under_chin/centre"))];
+    const glm::vec3 n = glm::mat3(glm::inverse(a.inverse_bind[static_cast<std::size_t>(under.joint)])) * under.normal;
+    EXPECT_LT(n.y, -0.5f);
+  }
+  EXPECT_GT(world(a, "body/shoulders/left").x, world(a, "body/neck/left").x + 0.04f);
+  EXPECT_LT(world(a, "body/shoulders/right").x, world(a, "body/neck/right").x - 0.04f);
   // The face is in front: nose and mouth ahead of the ears.
   EXPECT_GT(world(a, "body/nose/centre").z, world(a, "body/ears/left").z);
   EXPECT_GT(world(a, "space/centre").z, world(a, "body/chest/centre").z + 0.15f);
