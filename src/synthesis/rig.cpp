@@ -206,7 +206,8 @@ void PoseBuilder::finalize() {
 
 void PoseBuilder::set_from_local(const glm::quat* local) {
   const Rig& r = *rig;
-  std::vector<glm::quat> model(r.joint_count);
+  std::vector<glm::quat>& model = scratch_;
+  model.resize(r.joint_count);
   for (int j = 0; j < r.joint_count; ++j) {
     int p = r.parent[j];
     model[j] = p < 0 ? local[j] : model[p] * local[j];

@@ -85,6 +85,7 @@ struct PoseBuilder {
   std::vector<glm::quat> delta_;
   std::vector<char> is_set_;
   std::vector<glm::vec3> pos_;
+  std::vector<glm::quat> scratch_;  // model rotations for set_from_local (no per-call allocation)
 };
 
 // Small vector helpers shared by the solvers.

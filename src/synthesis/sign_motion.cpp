@@ -197,8 +197,13 @@ struct Solver {
         // one where the wrist realises the orientation best (a small penalty keeps it central).
         const float up_steps[4] = {-0.06f, 0.0f, 0.06f, 0.12f};
         const float in_steps[4] = {-0.12f, -0.06f, 0.0f, 0.05f};
+        // Placements are compared at the chosen swivel (cheap), then the winner gets its own
+        // swivel search.
         glm::vec3 base = st.target;
+        t.auto_swivel = false;
+        t.swivel_rad = best.swivel_rad;
         float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m;
+        bool moved = false;
         glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
         for (float dx : {0.0f, 0.08f})
         for (float du : up_steps)
@@ -211,8 +216,14 @@ struct Solver {
               best_cost = cost;
               best = p;
               st.target = t.point;
+              moved = true;
             }
           }
+        if (moved) {
+          t.point = st.target;
+          t.auto_swivel = true;
+          best = solve_arm(rig, plan.side, t);
+        }
       }
       st.swivel = best.swivel_rad;
     }
