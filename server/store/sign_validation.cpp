@@ -88,7 +88,7 @@ ValidatedNotation validate_notation(const std::string& notation,
   ValidatedNotation result;
   result.format = format_name(parsed_format);
 #if SIGNWEAVE_STORE_HAS_SPEC_JSON
-  result.compiled = json{{"spec", sw::notation::sign_spec_to_json(outcome.signs.front())}}.dump();
+  result.compiled = json{{"spec", sw::notation::sign_to_json(outcome.signs.front())}}.dump();
 #endif
   return result;
 #else

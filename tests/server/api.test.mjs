@@ -110,6 +110,9 @@ describe('signs', () => {
     assert.deepEqual(response.body.keywords.map((k) => k.word), ['hello', 'hi']);
     assert.equal(response.body.keywords[0].sense, 'a greeting');
     assert.equal(response.headers.get('etag'), `"${response.body.revision}"`);
+    // The core's parse of the notation is cached with the sign (the SignSpec as JSON).
+    assert.equal(typeof response.body.compiled.spec, 'object');
+    assert.ok(response.body.compiled.spec.dominant, JSON.stringify(response.body.compiled));
     const again = await request(server, 'GET', `/api/signs/${hits[0].id}`, { headers: { 'If-None-Match': response.headers.get('etag') } });
     assert.equal(again.status, 304);
   });
