@@ -1,37 +1,25 @@
 // The notation module in WebAssembly against the native core: the same texts parsed by
-// notationParse (WASM) and by `signweave-cli check --spec` (native) must give the same SignSpec
-// JSON and the same diagnostics (positions and messages). Skips, saying why, when the WASM module
-// or the native CLI has not been built.
+// notationParse (WASM) and natively (the `notation_parse` parity case, and `signweave-cli check
+// --spec` for corpus files) must give the same SignSpec JSON and the same diagnostics (positions
+// and messages), in every built flavour. Skips, saying why, when the WASM module or the native CLI
+// has not been built.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { createRequire } from 'node:module';
 import { execFileSync } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const require = createRequire(import.meta.url);
+import { FLAVOURS, GEN_DIR, NATIVE_CLI, ROOT, loadCore, runNativeParity } from './wasm_loader.mjs';
 
-function findModule() {
-  for (const dir of [path.join(root, 'web/gen'), path.join(root, 'build/wasm')]) {
-    const js = path.join(dir, 'signweave-scalar.js');
-    const wasm = path.join(dir, 'signweave-scalar.wasm');
-    if (fs.existsSync(js) && fs.existsSync(wasm)) return { js, wasm };
-  }
-  return null;
-}
-const cli = path.join(root, 'build/native/signweave-cli');
-const found = findModule();
-const skip = !found ? 'WASM module not built (./signweave build)' : !fs.existsSync(cli) ? 'native CLI not built' : false;
+const root = ROOT;
+const cli = NATIVE_CLI;
+const built = FLAVOURS.filter((f) => fs.existsSync(path.join(GEN_DIR, `signweave-${f}.wasm`)));
+const skip = built.length === 0 ? 'WASM module not built (./signweave build)' : !fs.existsSync(cli) ? 'native CLI not built' : false;
 
 let modulePromise = null;
 function wasmModule() {
-  if (!modulePromise) {
-    const factory = require(found.js);
-    modulePromise = factory({ wasmBinary: fs.readFileSync(found.wasm) });
-  }
+  if (!modulePromise) modulePromise = loadCore(built.includes('simd') ? 'simd' : 'scalar');
   return modulePromise;
 }
 
@@ -65,6 +53,22 @@ function assertSameAsNative(result, native, what) {
     );
   });
 }
+
+
+test('WASM parse equals native parse: the notation_parse parity case, every flavour', { skip }, async () => {
+  const expected = runNativeParity('notation_parse');
+  assert.ok(expected.cases.length >= 6);
+  for (const flavour of built) {
+    const core = await loadCore(flavour);
+    for (const c of expected.cases) {
+      const got = JSON.parse(core.notationParse(c.text, c.format));
+      assert.deepEqual(got, c.result, `${flavour}: ${c.format}: ${c.text.slice(0, 60)}`);
+    }
+  }
+  // The broken inputs really are broken: the parity holds for diagnostics too.
+  const broken = expected.cases.find((c) => c.text.includes('hamzzz')).result;
+  assert.ok(broken.diagnostics.some((d) => d.symbol === 'hamzzz'));
+});
 
 const formulaText = [
   '# seed 004 Table 2',
