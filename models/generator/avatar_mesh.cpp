@@ -322,13 +322,12 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
   }();
   for (int key = 0; key < kFaceKey + static_cast<int>(Surface::kCount); ++key) {
     if (key % kFaceKey >= static_cast<int>(Surface::kCount)) continue;
-    const int m = key;
     MeshPiece piece;
     piece.material = static_cast<Material>(key % kFaceKey);
     piece.face = key >= kFaceKey;
     std::map<std::uint32_t, std::uint32_t> remap;
     for (size_t t = 0; t + 2 < simplified.size(); t += 3) {
-      if (surface[simplified[t]] != m) continue;
+      if (surface[simplified[t]] != key) continue;
       for (int c = 0; c < 3; ++c) {
         const std::uint32_t v = simplified[t + static_cast<size_t>(c)];
         auto found = remap.find(v);

@@ -262,7 +262,7 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
         // The tip joint is the end of the flesh: keep the cone's cap inside it.
         if (seg == 2) end -= glm::normalize(J(to) - J(from)) * radii[3];
         cone(part, J(from), end, radii[seg], radii[seg + 1], Surface::kSkin, bone(from),
-             seg == 2 ? bone(to) : bone(to));
+             bone(to));
       }
     }
   }
