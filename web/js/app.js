@@ -102,7 +102,10 @@ function setProgress(fraction, text) {
 async function fetchWithProgress(url, onFraction) {
   const response = await fetch(url);
   if (!response.ok) throw new Error(`${url}: ${response.status} ${response.statusText}`);
-  const total = Number(response.headers.get('Content-Length')) || 0;
+  // A gzip response's Content-Length is the compressed size, while the stream yields decompressed
+  // bytes: only an identity response measures progress.
+  const encoded = (response.headers.get('Content-Encoding') || 'identity') !== 'identity';
+  const total = encoded ? 0 : Number(response.headers.get('Content-Length')) || 0;
   if (!response.body || !total) return new Uint8Array(await response.arrayBuffer());
   const reader = response.body.getReader();
   const chunks = [];

@@ -13,10 +13,8 @@ import { loadCore } from './core_loader.js';
 
 export class SigningCore {
   static async create({ onProgress = () => {} } = {}) {
-    onProgress(0.1);
-    const module = await loadCore();
-    onProgress(1);
-    return new SigningCore(module, module.flavour);
+    const { module, flavour } = await loadCore({ onProgress });
+    return new SigningCore(module, flavour);
   }
 
   constructor(module, flavour) {
