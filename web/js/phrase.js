@@ -140,7 +140,8 @@ export class PhrasePane {
     const spans = [];
     this.tokens.forEach((t, i) => {
       if (t.kind === 'pause') {
-        if (spans.length) spans[spans.length - 1].textContent += t.word;
+        // Punctuation follows its word outside the word's highlight.
+        spans.push(document.createTextNode(t.word));
         return;
       }
       const span = document.createElement('span');
