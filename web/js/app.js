@@ -124,6 +124,8 @@ async function fetchWithProgress(url, onFraction) {
 }
 
 async function boot() {
+  // The dictionary needs no 3D view: languages load whatever happens to WebGL2 or the core.
+  const languagesPromise = loadLanguages();
   try {
     renderer = new Renderer($('view'));
   } catch (err) {
@@ -135,7 +137,6 @@ async function boot() {
   }
   let coreFraction = 0, avatarFraction = 0;
   const progress = () => setProgress(0.5 * coreFraction + 0.5 * avatarFraction, 'Loading the signer…');
-  const languagesPromise = loadLanguages();
   let avatarBytes;
   try {
     [core, avatarBytes] = await Promise.all([
