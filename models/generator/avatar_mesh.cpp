@@ -15,19 +15,32 @@ namespace sw::avatar_generator {
 
 const char* material_name(Material material) {
   switch (material) {
-    case Material::kSkin: return "skin";
-    case Material::kTop: return "top";
-    case Material::kTrousers: return "trousers";
-    case Material::kShoes: return "shoes";
-    case Material::kHair: return "hair";
-    case Material::kLips: return "lips";
-    case Material::kBrows: return "brows";
-    case Material::kMouthInner: return "mouthInner";
-    case Material::kEyeWhite: return "eyeWhite";
-    case Material::kIris: return "iris";
-    case Material::kTongue: return "tongue";
-    case Material::kTeeth: return "teeth";
-    case Material::kCount: break;
+    case Material::kSkin:
+      return "skin";
+    case Material::kTop:
+      return "top";
+    case Material::kTrousers:
+      return "trousers";
+    case Material::kShoes:
+      return "shoes";
+    case Material::kHair:
+      return "hair";
+    case Material::kLips:
+      return "lips";
+    case Material::kBrows:
+      return "brows";
+    case Material::kMouthInner:
+      return "mouthInner";
+    case Material::kEyeWhite:
+      return "eyeWhite";
+    case Material::kIris:
+      return "iris";
+    case Material::kTongue:
+      return "tongue";
+    case Material::kTeeth:
+      return "teeth";
+    case Material::kCount:
+      break;
   }
   return "unknown";
 }
@@ -40,8 +53,8 @@ constexpr float kPi = 3.14159265358979f;
 void add_eyeball(glm::vec3 centre, int joint, std::vector<MeshPiece>& pieces) {
   constexpr int kSegments = 20;
   // Polar angles of the rings from the gaze axis: fine near the cornea, coarse behind.
-  const float rings[] = {0.0f, 0.22f, 0.36f, 0.48f, 0.62f, 0.85f, 1.1f, 1.35f,
-                         1.6f, 1.9f,  2.25f, 2.65f, kPi};
+  const float rings[] = {0.0f,  0.22f, 0.36f, 0.48f, 0.62f, 0.85f, 1.1f,
+                         1.35f, 1.6f,  1.9f,  2.25f, 2.65f, kPi};
   const int ring_count = static_cast<int>(sizeof(rings) / sizeof(rings[0]));
   const float iris_angle = 0.48f;  // 11.1 mm iris on a 12 mm-radius eyeball
   MeshPiece white, iris;
@@ -151,8 +164,10 @@ void straighten_material_seams(const ImplicitBody& body, const std::vector<std::
   for (size_t t = 0; t < triangle_key.size(); ++t)
     for (int c = 0; c < 3; ++c) {
       const std::uint32_t v = indices[3 * t + static_cast<size_t>(c)];
-      if (first_key[v] < 0) first_key[v] = triangle_key[t];
-      else if (first_key[v] != triangle_key[t]) seam[v] = 1;
+      if (first_key[v] < 0)
+        first_key[v] = triangle_key[t];
+      else if (first_key[v] != triangle_key[t])
+        seam[v] = 1;
     }
   std::map<std::uint32_t, std::vector<std::uint32_t>> neighbours;
   for (size_t t = 0; t < triangle_key.size(); ++t)
@@ -218,8 +233,9 @@ void add_teeth(const HumanoidLayout& layout, std::vector<MeshPiece>& pieces) {
           arch_centre + out * (arch_radius - thickness) + glm::vec3(0, y_root, 0),
           arch_centre + out * (arch_radius - thickness) + glm::vec3(0, y_edge, 0)};
       const glm::vec3 up(0.0f, upper ? 1.0f : -1.0f, 0.0f);
-      const glm::vec3 normals[4] = {glm::normalize(out - 0.3f * up), glm::normalize(out + 0.3f * up),
-                                    glm::normalize(-out + 0.3f * up), glm::normalize(-out - 0.3f * up)};
+      const glm::vec3 normals[4] = {
+          glm::normalize(out - 0.3f * up), glm::normalize(out + 0.3f * up),
+          glm::normalize(-out + 0.3f * up), glm::normalize(-out - 0.3f * up)};
       for (int c = 0; c < 4; ++c) {
         teeth.positions.push_back(corners[c]);
         teeth.normals.push_back(normals[c]);
@@ -262,7 +278,8 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
   // the materials the morphs move get their own key, so the face mesh is split off along a seam.
   std::vector<int> vertex_surface(raw.positions.size());
   for (size_t v = 0; v < raw.positions.size(); ++v)
-    vertex_surface[v] = static_cast<int>(body.surface_at(raw.positions[v], raw.nearest_primitive[v]));
+    vertex_surface[v] =
+        static_cast<int>(body.surface_at(raw.positions[v], raw.nearest_primitive[v]));
   const size_t triangle_count = raw.indices.size() / 3;
   constexpr int kFaceKey = 100;  // key = surface, + kFaceKey for face-mesh triangles
   std::vector<int> triangle_surface(triangle_count);
@@ -270,11 +287,13 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
     const int a = vertex_surface[raw.indices[3 * t]], b = vertex_surface[raw.indices[3 * t + 1]],
               c = vertex_surface[raw.indices[3 * t + 2]];
     int key = (b == c) ? b : a;
-    const glm::vec3 centroid = (raw.positions[raw.indices[3 * t]] + raw.positions[raw.indices[3 * t + 1]] +
-                                raw.positions[raw.indices[3 * t + 2]]) / 3.0f;
+    const glm::vec3 centroid =
+        (raw.positions[raw.indices[3 * t]] + raw.positions[raw.indices[3 * t + 1]] +
+         raw.positions[raw.indices[3 * t + 2]]) /
+        3.0f;
     const Surface s = static_cast<Surface>(key);
-    const bool face_material = s == Surface::kSkin || s == Surface::kLips ||
-                               s == Surface::kBrows || s == Surface::kMouthInner;
+    const bool face_material = s == Surface::kSkin || s == Surface::kLips || s == Surface::kBrows ||
+                               s == Surface::kMouthInner;
     if (face_material && in_face_region(centroid)) key += kFaceKey;
     triangle_surface[t] = key;
   }
@@ -308,9 +327,9 @@ std::vector<MeshPiece> build_avatar_mesh(const ImplicitBody& body, const Humanoi
   std::vector<std::uint32_t> simplified(indices.size());
   float error = 0.0f;
   // Error is relative to the mesh extent; 1.0 lets the triangle budget be the only limit.
-  const size_t kept = meshopt_simplify(simplified.data(), indices.data(), indices.size(),
-                                       &positions[0].x, positions.size(), sizeof(glm::vec3),
-                                       target_indices, 1.0f, 0, &error);
+  const size_t kept =
+      meshopt_simplify(simplified.data(), indices.data(), indices.size(), &positions[0].x,
+                       positions.size(), sizeof(glm::vec3), target_indices, 1.0f, 0, &error);
   simplified.resize(kept);
   if (stats) stats->body_triangles = kept / 3;
 

@@ -18,12 +18,23 @@ namespace sw::avatar_generator {
 
 // Materials of the exported model: the body surfaces, then the separate meshes.
 enum class Material : int {
-  kSkin = 0, kTop, kTrousers, kShoes, kHair, kLips, kBrows, kMouthInner,
-  kEyeWhite, kIris, kTongue, kTeeth, kCount
+  kSkin = 0,
+  kTop,
+  kTrousers,
+  kShoes,
+  kHair,
+  kLips,
+  kBrows,
+  kMouthInner,
+  kEyeWhite,
+  kIris,
+  kTongue,
+  kTeeth,
+  kCount
 };
 const char* material_name(Material material);
 
-struct MeshPiece {            // one glTF primitive's worth of geometry
+struct MeshPiece {  // one glTF primitive's worth of geometry
   Material material = Material::kSkin;
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;
@@ -34,7 +45,7 @@ struct MeshPiece {            // one glTF primitive's worth of geometry
 };
 
 struct AvatarMeshSettings {
-  float cell_m = 0.0015f;            // polygonisation grid spacing
+  float cell_m = 0.0015f;               // polygonisation grid spacing
   std::size_t triangle_budget = 30000;  // whole model, eyes and tongue included
 };
 

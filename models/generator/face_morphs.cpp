@@ -150,7 +150,9 @@ glm::vec3 face_morph_delta(const HumanoidLayout& layout, int channel, glm::vec3 
   if (rigid && name != "tongueOut" && name.rfind("viseme_", 0) != 0 && name != "jawOpen")
     return glm::vec3(0.0f);
   const float hair = below_hairline(p);
-  auto side_of = [&](const std::string& n) { return n.find("Right") != std::string::npos ? -1.0f : 1.0f; };
+  auto side_of = [&](const std::string& n) {
+    return n.find("Right") != std::string::npos ? -1.0f : 1.0f;
+  };
 
   if (name == "browInnerUp") {
     const float m = bump(p, {0.016f, 1.626f, 0.092f}, {0.014f, 0.014f}) +
@@ -202,21 +204,58 @@ glm::vec3 face_morph_delta(const HumanoidLayout& layout, int channel, glm::vec3 
 
   // Visemes (Oculus set): mixes of the mouth shapes above.
   MouthMix m;
-  if (name == "viseme_sil") { m.press = 0.5f; }  // rest: lips lightly together
-  else if (name == "viseme_PP") { m.press = 1.0f; m.pucker = 0.15f; }
-  else if (name == "viseme_FF") { m.jaw = 0.08f; m.tuck = 1.0f; m.upper_up = 0.35f; }
-  else if (name == "viseme_TH") { m.jaw = 0.18f; m.tongue = 0.45f; m.stretch = 0.15f; }
-  else if (name == "viseme_DD") { m.jaw = 0.25f; m.stretch = 0.25f; }
-  else if (name == "viseme_kk") { m.jaw = 0.32f; m.stretch = 0.3f; }
-  else if (name == "viseme_CH") { m.jaw = 0.15f; m.pucker = 0.55f; m.upper_up = 0.35f; }
-  else if (name == "viseme_SS") { m.jaw = 0.1f; m.stretch = 0.5f; m.smile = 0.25f; }
-  else if (name == "viseme_nn") { m.jaw = 0.2f; m.stretch = 0.15f; }
-  else if (name == "viseme_RR") { m.jaw = 0.2f; m.pucker = 0.45f; }
-  else if (name == "viseme_aa") { m.jaw = 0.75f; m.lower_down = 0.3f; }
-  else if (name == "viseme_E") { m.jaw = 0.35f; m.stretch = 0.55f; m.upper_up = 0.2f; }
-  else if (name == "viseme_I") { m.jaw = 0.2f; m.stretch = 0.7f; m.smile = 0.3f; }
-  else if (name == "viseme_O") { m.jaw = 0.5f; m.pucker = 0.8f; }
-  else if (name == "viseme_U") { m.jaw = 0.18f; m.pucker = 1.0f; }
+  if (name == "viseme_sil") {
+    m.press = 0.5f;
+  }  // rest: lips lightly together
+  else if (name == "viseme_PP") {
+    m.press = 1.0f;
+    m.pucker = 0.15f;
+  } else if (name == "viseme_FF") {
+    m.jaw = 0.08f;
+    m.tuck = 1.0f;
+    m.upper_up = 0.35f;
+  } else if (name == "viseme_TH") {
+    m.jaw = 0.18f;
+    m.tongue = 0.45f;
+    m.stretch = 0.15f;
+  } else if (name == "viseme_DD") {
+    m.jaw = 0.25f;
+    m.stretch = 0.25f;
+  } else if (name == "viseme_kk") {
+    m.jaw = 0.32f;
+    m.stretch = 0.3f;
+  } else if (name == "viseme_CH") {
+    m.jaw = 0.15f;
+    m.pucker = 0.55f;
+    m.upper_up = 0.35f;
+  } else if (name == "viseme_SS") {
+    m.jaw = 0.1f;
+    m.stretch = 0.5f;
+    m.smile = 0.25f;
+  } else if (name == "viseme_nn") {
+    m.jaw = 0.2f;
+    m.stretch = 0.15f;
+  } else if (name == "viseme_RR") {
+    m.jaw = 0.2f;
+    m.pucker = 0.45f;
+  } else if (name == "viseme_aa") {
+    m.jaw = 0.75f;
+    m.lower_down = 0.3f;
+  } else if (name == "viseme_E") {
+    m.jaw = 0.35f;
+    m.stretch = 0.55f;
+    m.upper_up = 0.2f;
+  } else if (name == "viseme_I") {
+    m.jaw = 0.2f;
+    m.stretch = 0.7f;
+    m.smile = 0.3f;
+  } else if (name == "viseme_O") {
+    m.jaw = 0.5f;
+    m.pucker = 0.8f;
+  } else if (name == "viseme_U") {
+    m.jaw = 0.18f;
+    m.pucker = 1.0f;
+  }
   return mouth(layout, p, material, m);
 }
 

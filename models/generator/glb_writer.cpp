@@ -109,7 +109,8 @@ bool GlbBuilder::write(const std::string& path, std::string* error) const {
     if (error) *error = "cannot open " + path + " for writing";
     return false;
   }
-  file.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  file.write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
   if (!file) {
     if (error) *error = "write to " + path + " failed";
     return false;

@@ -25,19 +25,32 @@ struct MaterialLook {
 // Dark plain clothing, as interpreters wear, so the hands stand out against the torso.
 MaterialLook look(Material m) {
   switch (m) {
-    case Material::kSkin: return {{0.87f, 0.68f, 0.56f}, 0.55f};
-    case Material::kTop: return {{0.11f, 0.15f, 0.24f}, 0.85f};
-    case Material::kTrousers: return {{0.20f, 0.20f, 0.23f}, 0.85f};
-    case Material::kShoes: return {{0.10f, 0.08f, 0.07f}, 0.5f};
-    case Material::kHair: return {{0.20f, 0.13f, 0.09f}, 0.7f};
-    case Material::kLips: return {{0.74f, 0.44f, 0.42f}, 0.45f};
-    case Material::kBrows: return {{0.24f, 0.16f, 0.11f}, 0.8f};
-    case Material::kMouthInner: return {{0.28f, 0.07f, 0.08f}, 0.6f};
-    case Material::kEyeWhite: return {{0.93f, 0.92f, 0.89f}, 0.2f};
-    case Material::kIris: return {{0.22f, 0.14f, 0.09f}, 0.15f};
-    case Material::kTongue: return {{0.76f, 0.38f, 0.40f}, 0.45f};
-    case Material::kTeeth: return {{0.92f, 0.90f, 0.84f}, 0.3f};
-    case Material::kCount: break;
+    case Material::kSkin:
+      return {{0.87f, 0.68f, 0.56f}, 0.55f};
+    case Material::kTop:
+      return {{0.11f, 0.15f, 0.24f}, 0.85f};
+    case Material::kTrousers:
+      return {{0.20f, 0.20f, 0.23f}, 0.85f};
+    case Material::kShoes:
+      return {{0.10f, 0.08f, 0.07f}, 0.5f};
+    case Material::kHair:
+      return {{0.20f, 0.13f, 0.09f}, 0.7f};
+    case Material::kLips:
+      return {{0.74f, 0.44f, 0.42f}, 0.45f};
+    case Material::kBrows:
+      return {{0.24f, 0.16f, 0.11f}, 0.8f};
+    case Material::kMouthInner:
+      return {{0.28f, 0.07f, 0.08f}, 0.6f};
+    case Material::kEyeWhite:
+      return {{0.93f, 0.92f, 0.89f}, 0.2f};
+    case Material::kIris:
+      return {{0.22f, 0.14f, 0.09f}, 0.15f};
+    case Material::kTongue:
+      return {{0.76f, 0.38f, 0.40f}, 0.45f};
+    case Material::kTeeth:
+      return {{0.92f, 0.90f, 0.84f}, 0.3f};
+    case Material::kCount:
+      break;
   }
   return {{1, 0, 1}, 1};
 }
@@ -69,13 +82,14 @@ void export_avatar(const ExportModel& model, GlbBuilder& glb) {
   for (size_t j = 0; j < layout.joints.size(); ++j) {
     const LayoutJoint& joint = layout.joints[j];
     const glm::vec3 parent_position =
-        joint.parent >= 0 ? layout.joints[static_cast<size_t>(joint.parent)].position : glm::vec3(0);
+        joint.parent >= 0 ? layout.joints[static_cast<size_t>(joint.parent)].position
+                          : glm::vec3(0);
     const glm::vec3 t = joint.position - parent_position;  // identity rotation: offset only
     nlohmann::json node = {{"name", joint.name}, {"translation", {t.x, t.y, t.z}}};
     nodes.push_back(node);
     if (joint.parent >= 0)
-      nodes[static_cast<size_t>(joint_base + joint.parent)]["children"].push_back(joint_base +
-                                                                                 static_cast<int>(j));
+      nodes[static_cast<size_t>(joint_base + joint.parent)]["children"].push_back(
+          joint_base + static_cast<int>(j));
     else
       scene_roots.push_back(joint_base + static_cast<int>(j));
   }
@@ -87,11 +101,10 @@ void export_avatar(const ExportModel& model, GlbBuilder& glb) {
     inverse_bind.push_back(glm::translate(glm::mat4(1.0f), -layout.joints[j].position));
     skin_joints.push_back(joint_base + static_cast<int>(j));
   }
-  doc["skins"] = nlohmann::json::array(
-      {{{"name", "signweave-skeleton"},
-        {"joints", skin_joints},
-        {"skeleton", joint_base + layout.find("hips")},
-        {"inverseBindMatrices", glb.add_mat4(inverse_bind)}}});
+  doc["skins"] = nlohmann::json::array({{{"name", "signweave-skeleton"},
+                                         {"joints", skin_joints},
+                                         {"skeleton", joint_base + layout.find("hips")},
+                                         {"inverseBindMatrices", glb.add_mat4(inverse_bind)}}});
 
   nlohmann::json materials = nlohmann::json::array();
   for (int m = 0; m < static_cast<int>(Material::kCount); ++m) {
@@ -172,18 +185,17 @@ void export_avatar(const ExportModel& model, GlbBuilder& glb) {
     if (is_vrm_human_bone(layout.joints[j].name))
       human_bones[layout.joints[j].name] = {{"node", joint_base + static_cast<int>(j)}};
   doc["extensionsUsed"] = {"VRMC_vrm"};
-  doc["extensions"]["VRMC_vrm"] = {
-      {"specVersion", "1.0"},
-      {"meta",
-       {{"name", "Signweave avatar"},
-        {"version", "1"},
-        {"authors", {"Signweave project"}},
-        {"licenseUrl", "https://vrm.dev/licenses/1.0/"},
-        {"avatarPermission", "everyone"},
-        {"commercialUsage", "corporation"},
-        {"allowRedistribution", true},
-        {"modification", "allowModificationRedistribution"}}},
-      {"humanoid", {{"humanBones", human_bones}}}};
+  doc["extensions"]["VRMC_vrm"] = {{"specVersion", "1.0"},
+                                   {"meta",
+                                    {{"name", "Signweave avatar"},
+                                     {"version", "1"},
+                                     {"authors", {"Signweave project"}},
+                                     {"licenseUrl", "https://vrm.dev/licenses/1.0/"},
+                                     {"avatarPermission", "everyone"},
+                                     {"commercialUsage", "corporation"},
+                                     {"allowRedistribution", true},
+                                     {"modification", "allowModificationRedistribution"}}},
+                                   {"humanoid", {{"humanBones", human_bones}}}};
 }
 
 }  // namespace sw::avatar_generator

@@ -14,7 +14,7 @@
 
 namespace sw::avatar_generator {
 
-struct MorphTargetData {                 // one morph target of one piece
+struct MorphTargetData {                   // one morph target of one piece
   std::vector<glm::vec3> position_deltas;  // one per vertex of the piece
 };
 

@@ -1,8 +1,9 @@
 // Humanoid layout: anthropometric joint positions of the Signweave avatar (see humanoid_layout.h
 // for the bind-pose convention). Figures are adult averages rounded to millimetres: stature
 // 1.70 m, hip joint at 0.53 of stature, knee at 0.285, upper arm 0.285 m,
-// forearm 0.25 m, shoulder joint 1.39 m, hand 0.19 m (wrist centre to middle fingertip), hand breadth at the knuckles
-// about 0.08 m, phalanx ratios proximal : intermediate : distal about 1 : 0.6 : 0.48.
+// forearm 0.25 m, shoulder joint 1.39 m, hand 0.19 m (wrist centre to middle fingertip), hand
+// breadth at the knuckles about 0.08 m, phalanx ratios proximal : intermediate : distal about 1 :
+// 0.6 : 0.48.
 #include "humanoid_layout.h"
 
 #include <cmath>
@@ -51,7 +52,12 @@ constexpr FingerSpec kFingers[4] = {
     {"Index", {0.022f, 0.004f, 0.014f}, {0.090f, 0.003f, 0.0275f}, 0.07f, 0.040f, 0.023f, 0.019f},
     {"Middle", {0.022f, 0.006f, 0.004f}, {0.094f, 0.004f, 0.0085f}, 0.0f, 0.046f, 0.028f, 0.022f},
     {"Ring", {0.020f, 0.005f, -0.007f}, {0.089f, 0.002f, -0.0105f}, -0.07f, 0.042f, 0.026f, 0.020f},
-    {"Little", {0.018f, 0.002f, -0.017f}, {0.080f, -0.002f, -0.0285f}, -0.15f, 0.033f, 0.019f,
+    {"Little",
+     {0.018f, 0.002f, -0.017f},
+     {0.080f, -0.002f, -0.0285f},
+     -0.15f,
+     0.033f,
+     0.019f,
      0.018f},
 };
 

@@ -2,7 +2,8 @@
 // derived from adult anthropometry (about 1.70 m tall, hand 0.19 m from wrist to middle fingertip).
 //
 // BIND POSE CONVENTION (the loader, synthesis and the page rely on it):
-//   * every joint's rest LOCAL ROTATION IS IDENTITY and its scale is 1: joint frames are aligned with
+//   * every joint's rest LOCAL ROTATION IS IDENTITY and its scale is 1: joint frames are aligned
+//   with
 //     the model axes in the bind pose, all offsets live in the translations;
 //   * T-pose: arms straight out sideways along ±X (the avatar's LEFT hand at +X), palms facing down
 //     (-Y), fingers along ±X with a slight natural fan, thumbs towards +Z;

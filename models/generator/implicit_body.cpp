@@ -78,9 +78,8 @@ void ImplicitBody::add(ImplicitPrimitive primitive) {
 
 ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   auto J = [&](const std::string& name) { return layout.position(name); };
-  auto bone = [&](const std::string& name) { return layout.find(name); };
-  auto cone = [&](int part, glm::vec3 a, glm::vec3 b, float ra, float rb, Surface s, int bone_start,
-                  int bone_end, float squash = 1.0f, glm::vec3 squash_axis = {0, 1, 0}) {
+  auto cone = [&](int part, glm::vec3 a, glm::vec3 b, float ra, float rb, Surface s,
+                  float squash = 1.0f, glm::vec3 squash_axis = {0, 1, 0}) {
     ImplicitPrimitive p;
     p.kind = ImplicitPrimitive::Kind::kRoundCone;
     p.a = a;
@@ -91,20 +90,15 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
     p.squash_axis = squash_axis;
     p.part = part;
     p.surface = s;
-    p.bone = bone_start;
-    p.bone_end = bone_end;
     add(p);
   };
-  auto blob = [&](int part, glm::vec3 centre, glm::vec3 radii, Surface s, int bone_start,
-                  int bone_end) {
+  auto blob = [&](int part, glm::vec3 centre, glm::vec3 radii, Surface s) {
     ImplicitPrimitive p;
     p.kind = ImplicitPrimitive::Kind::kEllipsoid;
     p.a = centre;
     p.radii = radii;
     p.part = part;
     p.surface = s;
-    p.bone = bone_start;
-    p.bone_end = bone_end;
     add(p);
   };
   auto carve = [&](int part, glm::vec3 centre, glm::vec3 radii, float k, Surface s) {
@@ -119,73 +113,60 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
     add(p);
   };
 
-  const int hips = bone("hips"), spine = bone("spine"), chest = bone("chest"),
-            upper_chest = bone("upperChest"), neck = bone("neck"), head = bone("head"),
-            jaw = bone("jaw");
-
   // Trunk: pelvis, belly, rib cage, shoulder girdle (chest depth 0.22 m, shoulder breadth 0.38 m).
   const int torso = add_part("torso", -1, 0.0f, 0.06f);
-  blob(torso, {0.0f, 0.950f, -0.008f}, {0.160f, 0.105f, 0.105f}, Surface::kTrousers, hips, spine);
-  blob(torso, {0.0f, 1.070f, 0.000f}, {0.135f, 0.110f, 0.098f}, Surface::kTop, spine, chest);
-  blob(torso, {0.0f, 1.235f, 0.000f}, {0.150f, 0.150f, 0.105f}, Surface::kTop, chest, upper_chest);
-  cone(torso, {-0.130f, 1.360f, -0.015f}, {0.130f, 1.360f, -0.015f}, 0.058f, 0.058f, Surface::kTop,
-       upper_chest, neck);
+  blob(torso, {0.0f, 0.950f, -0.008f}, {0.160f, 0.105f, 0.105f}, Surface::kTrousers);
+  blob(torso, {0.0f, 1.070f, 0.000f}, {0.135f, 0.110f, 0.098f}, Surface::kTop);
+  blob(torso, {0.0f, 1.235f, 0.000f}, {0.150f, 0.150f, 0.105f}, Surface::kTop);
+  cone(torso, {-0.130f, 1.360f, -0.015f}, {0.130f, 1.360f, -0.015f}, 0.058f, 0.058f, Surface::kTop);
   for (float side : {1.0f, -1.0f}) {
-    blob(torso, {side * 0.070f, 0.900f, -0.055f}, {0.085f, 0.095f, 0.070f}, Surface::kTrousers,
-         hips, spine);
-    blob(torso, {side * 0.060f, 1.270f, 0.040f}, {0.070f, 0.060f, 0.060f}, Surface::kTop, chest,
-         upper_chest);
+    blob(torso, {side * 0.070f, 0.900f, -0.055f}, {0.085f, 0.095f, 0.070f}, Surface::kTrousers);
+    blob(torso, {side * 0.060f, 1.270f, 0.040f}, {0.070f, 0.060f, 0.060f}, Surface::kTop);
   }
 
   // Neck and head: head height chin-to-vertex 0.23 m, breadth 0.15 m, depth 0.195 m.
   const int neck_part = add_part("neck", torso, 0.035f, 0.02f);
-  cone(neck_part, {0.0f, 1.380f, -0.018f}, {0.0f, 1.560f, -0.008f}, 0.058f, 0.054f, Surface::kSkin,
-       neck, head);
+  cone(neck_part, {0.0f, 1.380f, -0.018f}, {0.0f, 1.560f, -0.008f}, 0.058f, 0.054f, Surface::kSkin);
   const int head_part = add_part("head", neck_part, 0.03f, 0.03f);
-  blob(head_part, {0.0f, 1.612f, -0.012f}, {0.075f, 0.094f, 0.096f}, Surface::kSkin, head, -1);
-  blob(head_part, {0.0f, 1.585f, 0.020f}, {0.068f, 0.080f, 0.076f}, Surface::kSkin, head, -1);
+  blob(head_part, {0.0f, 1.612f, -0.012f}, {0.075f, 0.094f, 0.096f}, Surface::kSkin);
+  blob(head_part, {0.0f, 1.585f, 0.020f}, {0.068f, 0.080f, 0.076f}, Surface::kSkin);
   // Mandible: a jaw ellipsoid and the chin; both follow the jaw bone.
-  blob(head_part, {0.0f, 1.526f, 0.030f}, {0.056f, 0.036f, 0.060f}, Surface::kSkin, jaw, -1);
-  blob(head_part, {0.0f, 1.496f, 0.076f}, {0.019f, 0.015f, 0.014f}, Surface::kSkin, jaw, -1);
+  blob(head_part, {0.0f, 1.526f, 0.030f}, {0.056f, 0.036f, 0.060f}, Surface::kSkin);
+  blob(head_part, {0.0f, 1.496f, 0.076f}, {0.019f, 0.015f, 0.014f}, Surface::kSkin);
   // Forehead: keeps the brow-to-hairline profile near vertical instead of sloping back.
-  blob(head_part, {0.0f, 1.648f, 0.018f}, {0.066f, 0.048f, 0.072f}, Surface::kSkin, head, -1);
+  blob(head_part, {0.0f, 1.648f, 0.018f}, {0.066f, 0.048f, 0.072f}, Surface::kSkin);
   for (float side : {1.0f, -1.0f}) {
     // cheek bones and the soft cheeks
-    blob(head_part, {side * 0.046f, 1.585f, 0.066f}, {0.024f, 0.018f, 0.022f}, Surface::kSkin, head,
-         -1);
-    blob(head_part, {side * 0.040f, 1.550f, 0.060f}, {0.026f, 0.026f, 0.022f}, Surface::kSkin, head,
-         -1);
+    blob(head_part, {side * 0.046f, 1.585f, 0.066f}, {0.024f, 0.018f, 0.022f}, Surface::kSkin);
+    blob(head_part, {side * 0.040f, 1.550f, 0.060f}, {0.026f, 0.026f, 0.022f}, Surface::kSkin);
   }
   // Ears: flat discs at the sides, centred at eye-to-nose height.
   const int ear_part = add_part("ears", head_part, 0.006f, 0.004f);
   for (float side : {1.0f, -1.0f}) {
-    blob(ear_part, {side * 0.076f, 1.585f, -0.008f}, {0.010f, 0.030f, 0.019f}, Surface::kSkin, head,
-         -1);
+    blob(ear_part, {side * 0.076f, 1.585f, -0.008f}, {0.010f, 0.030f, 0.019f}, Surface::kSkin);
   }
   // Nose: bridge to tip, nostril wings.
   const int nose_part = add_part("nose", head_part, 0.010f, 0.008f);
-  cone(nose_part, {0.0f, 1.606f, 0.090f}, {0.0f, 1.566f, 0.116f}, 0.0070f, 0.0105f, Surface::kSkin,
-       head, -1);
+  cone(nose_part, {0.0f, 1.606f, 0.090f}, {0.0f, 1.566f, 0.116f}, 0.0070f, 0.0105f, Surface::kSkin);
   for (float side : {1.0f, -1.0f})
-    blob(nose_part, {side * 0.0125f, 1.563f, 0.101f}, {0.0076f, 0.0068f, 0.0078f}, Surface::kSkin,
-         head, -1);
+    blob(nose_part, {side * 0.0125f, 1.563f, 0.101f}, {0.0076f, 0.0068f, 0.0078f}, Surface::kSkin);
   // Brow ridges: slight, so the brows catch the light.
   const int brow_part = add_part("brows", head_part, 0.010f, 0.006f);
   for (float side : {1.0f, -1.0f})
     cone(brow_part, {side * 0.013f, 1.622f, 0.091f}, {side * 0.052f, 1.628f, 0.073f}, 0.0052f,
-         0.0038f, Surface::kBrows, head, -1);
+         0.0038f, Surface::kBrows);
   // Lips: upper and lower lip as curved chains of round cones meeting at the mouth corners.
   const int lips_part = add_part("lips", head_part, 0.006f, 0.004f);
   const float mouth_y = kMouthY;
   for (float side : {1.0f, -1.0f}) {
     cone(lips_part, {0.0f, mouth_y + 0.0042f, 0.0985f}, {side * 0.013f, mouth_y + 0.0036f, 0.0960f},
-         0.0048f, 0.0040f, Surface::kLips, head, -1);
+         0.0048f, 0.0040f, Surface::kLips);
     cone(lips_part, {side * 0.013f, mouth_y + 0.0036f, 0.0960f},
-         {side * 0.0235f, mouth_y + 0.0004f, 0.0880f}, 0.0040f, 0.0022f, Surface::kLips, head, -1);
+         {side * 0.0235f, mouth_y + 0.0004f, 0.0880f}, 0.0040f, 0.0022f, Surface::kLips);
     cone(lips_part, {0.0f, mouth_y - 0.0048f, 0.0965f}, {side * 0.013f, mouth_y - 0.0042f, 0.0940f},
-         0.0054f, 0.0046f, Surface::kLips, jaw, -1);
+         0.0054f, 0.0046f, Surface::kLips);
     cone(lips_part, {side * 0.013f, mouth_y - 0.0042f, 0.0940f},
-         {side * 0.0235f, mouth_y - 0.0004f, 0.0880f}, 0.0046f, 0.0022f, Surface::kLips, jaw, -1);
+         {side * 0.0235f, mouth_y - 0.0004f, 0.0880f}, 0.0046f, 0.0022f, Surface::kLips);
   }
   // The mouth slit: a thin pocket between the lips, 5 cm wide, 3 cm deep; its walls are the dark
   // inner mouth that shows when the jaw opens.
@@ -201,47 +182,40 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   const int lid_part = add_part("eyelids", head_part, 0.006f, 0.0f);
   for (float side : {1.0f, -1.0f}) {
     const glm::vec3 eye = J(side > 0 ? "leftEye" : "rightEye");
-    blob(lid_part, eye, glm::vec3(kEyelidRadius), Surface::kSkin, head, -1);
+    blob(lid_part, eye, glm::vec3(kEyelidRadius), Surface::kSkin);
     carve(head_part, eye + glm::vec3(side * 0.0008f, 0.0f, 0.0125f), {0.0145f, 0.0062f, 0.0085f},
           0.0012f, Surface::kSkin);
   }
   // Hair: a cap over the cranium, a little fuller at the back.
   const int hair_part = add_part("hair", head_part, 0.010f, 0.02f);
-  blob(hair_part, {0.0f, 1.628f, -0.020f}, {0.080f, 0.088f, 0.098f}, Surface::kHair, head, -1);
+  blob(hair_part, {0.0f, 1.628f, -0.020f}, {0.080f, 0.088f, 0.098f}, Surface::kHair);
 
   // Arms and hands.
   for (int s = 0; s < 2; ++s) {
     const std::string p = s == 0 ? "left" : "right";
     const float side = s == 0 ? 1.0f : -1.0f;
     auto H = [&](glm::vec3 v) { return J(p + "Hand") + glm::vec3(side * v.x, v.y, v.z); };
-    const int shoulder = bone(p + "Shoulder"), upper_arm = bone(p + "UpperArm"),
-              lower_arm = bone(p + "LowerArm"), hand = bone(p + "Hand");
     const int arm = add_part(p + "Arm", torso, 0.045f, 0.035f);
     // Deltoid: caps the joint without rising above the acromion (about 4 cm over the joint).
-    blob(arm, J(p + "UpperArm") + glm::vec3(side * -0.004f, -0.004f, 0.0f), {0.058f, 0.046f, 0.054f},
-         Surface::kTop, shoulder, upper_arm);
-    cone(arm, J(p + "UpperArm"), J(p + "LowerArm"), 0.046f, 0.037f, Surface::kTop, upper_arm,
-         lower_arm);
+    blob(arm, J(p + "UpperArm") + glm::vec3(side * -0.004f, -0.004f, 0.0f),
+         {0.058f, 0.046f, 0.054f}, Surface::kTop);
+    cone(arm, J(p + "UpperArm"), J(p + "LowerArm"), 0.046f, 0.037f, Surface::kTop);
     // Forearm: muscular near the elbow, flattened at the wrist (wrist 56 mm wide, 38 mm deep).
     cone(arm, J(p + "LowerArm"), J(p + "LowerArm") + glm::vec3(side * 0.09f, 0.0f, 0.0f), 0.040f,
-         0.038f, Surface::kTop, lower_arm, hand, 0.85f);
+         0.038f, Surface::kTop, 0.85f);
     cone(arm, J(p + "LowerArm") + glm::vec3(side * 0.09f, 0.0f, 0.0f), J(p + "Hand"), 0.038f,
-         0.027f, Surface::kTop, lower_arm, hand, 0.70f);
+         0.027f, Surface::kTop, 0.70f);
 
     // Palm: metacarpal rays flattened into a plate 28 mm thick, plus thenar/hypothenar pads.
     const int palm = add_part(p + "Palm", arm, 0.014f, 0.012f);
     for (int f = 1; f < 5; ++f) {
       const std::string finger = p + kFingerNames[f];
       cone(palm, J(finger + "Metacarpal") + glm::vec3(side * -0.008f, -0.003f, 0.0f),
-           J(finger + "Proximal"), 0.0135f, 0.0105f - 0.0004f * f, Surface::kSkin,
-           bone(finger + "Metacarpal"), bone(finger + "Proximal"), 0.62f);
+           J(finger + "Proximal"), 0.0135f, 0.0105f - 0.0004f * f, Surface::kSkin, 0.62f);
     }
-    blob(palm, H({0.035f, -0.007f, 0.019f}), {0.030f, 0.012f, 0.017f}, Surface::kSkin,
-         bone(p + "ThumbMetacarpal"), bone(p + "ThumbProximal"));
-    blob(palm, H({0.045f, -0.006f, -0.022f}), {0.034f, 0.010f, 0.013f}, Surface::kSkin,
-         bone(p + "LittleMetacarpal"), bone(p + "LittleProximal"));
-    blob(palm, H({0.010f, 0.000f, 0.000f}), {0.022f, 0.015f, 0.026f}, Surface::kSkin, hand,
-         bone(p + "MiddleMetacarpal"));
+    blob(palm, H({0.035f, -0.007f, 0.019f}), {0.030f, 0.012f, 0.017f}, Surface::kSkin);
+    blob(palm, H({0.045f, -0.006f, -0.022f}), {0.034f, 0.010f, 0.013f}, Surface::kSkin);
+    blob(palm, H({0.010f, 0.000f, 0.000f}), {0.022f, 0.015f, 0.026f}, Surface::kSkin);
 
     // Fingers: radii taper from the proximal phalanx to the tip (index 16 mm wide at the base).
     const float base_radius[5] = {0.0100f, 0.0082f, 0.0084f, 0.0080f, 0.0070f};
@@ -257,12 +231,12 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
                               f == 0 ? r0 * 0.93f : r0 * 0.87f, r0 * 0.80f};
       for (int seg = 0; seg < 3; ++seg) {
         const std::string from = finger + segments[seg];
-        const std::string to = (seg == 2) ? p + kFingerNames[f] + "Tip" : finger + segments[seg + 1];
+        const std::string to =
+            (seg == 2) ? p + kFingerNames[f] + "Tip" : finger + segments[seg + 1];
         glm::vec3 end = J(to);
         // The tip joint is the end of the flesh: keep the cone's cap inside it.
         if (seg == 2) end -= glm::normalize(J(to) - J(from)) * radii[3];
-        cone(part, J(from), end, radii[seg], radii[seg + 1], Surface::kSkin, bone(from),
-             bone(to));
+        cone(part, J(from), end, radii[seg], radii[seg + 1], Surface::kSkin);
       }
     }
   }
@@ -271,21 +245,20 @@ ImplicitBody::ImplicitBody(const HumanoidLayout& layout) : layout_(layout) {
   for (int s = 0; s < 2; ++s) {
     const std::string p = s == 0 ? "left" : "right";
     const float side = s == 0 ? 1.0f : -1.0f;
-    const int upper_leg = bone(p + "UpperLeg"), lower_leg = bone(p + "LowerLeg"),
-              foot = bone(p + "Foot"), toes = bone(p + "Toes");
     const int leg = add_part(p + "Leg", torso, 0.05f, 0.04f);
     cone(leg, J(p + "UpperLeg") + glm::vec3(0.0f, 0.03f, -0.005f), J(p + "LowerLeg"), 0.082f,
-         0.052f, Surface::kTrousers, upper_leg, lower_leg);
-    cone(leg, J(p + "LowerLeg"), J(p + "Foot"), 0.050f, 0.034f, Surface::kTrousers, lower_leg, foot);
-    blob(leg, J(p + "LowerLeg") + glm::vec3(side * 0.004f, -0.11f, -0.022f), {0.048f, 0.10f, 0.046f},
-         Surface::kTrousers, lower_leg, foot);
+         0.052f, Surface::kTrousers);
+    cone(leg, J(p + "LowerLeg"), J(p + "Foot"), 0.050f, 0.034f, Surface::kTrousers);
+    blob(leg, J(p + "LowerLeg") + glm::vec3(side * 0.004f, -0.11f, -0.022f),
+         {0.048f, 0.10f, 0.046f}, Surface::kTrousers);
     const int shoe = add_part(p + "Foot", leg, 0.025f, 0.03f);
     const glm::vec3 ankle = J(p + "Foot");
-    cone(shoe, ankle + glm::vec3(0.0f, -0.035f, -0.045f), J(p + "Toes") + glm::vec3(0, 0.008f, 0.0f),
-         0.040f, 0.038f, Surface::kShoes, foot, toes, 0.72f, {0, 1, 0});
+    cone(shoe, ankle + glm::vec3(0.0f, -0.035f, -0.045f),
+         J(p + "Toes") + glm::vec3(0, 0.008f, 0.0f), 0.040f, 0.038f, Surface::kShoes, 0.72f,
+         {0, 1, 0});
     cone(shoe, J(p + "Toes") + glm::vec3(0, 0.008f, 0.0f),
          J(p + "Toes") + glm::vec3(side * -0.005f, 0.006f, 0.050f), 0.036f, 0.030f, Surface::kShoes,
-         toes, -1, 0.62f, {0, 1, 0});
+         0.62f, {0, 1, 0});
   }
 }
 
@@ -350,7 +323,8 @@ SurfaceSample ImplicitBody::sample(glm::vec3 p, const std::vector<int>& active) 
     }
     const int parent = parts_[static_cast<size_t>(i)].parent;
     if (parent < 0) continue;
-    const float blended = smooth_min(own[parent], combined[i], parts_[static_cast<size_t>(i)].blend_k);
+    const float blended =
+        smooth_min(own[parent], combined[i], parts_[static_cast<size_t>(i)].blend_k);
     combined[parent] = std::min(combined[parent], blended);
   }
   result.distance = combined[0];
@@ -426,7 +400,8 @@ Surface ImplicitBody::surface_at(glm::vec3 p, int nearest_primitive) const {
     const float cuff = layout_.position("leftHand").x - 0.03f;
     return std::fabs(p.x) < cuff ? Surface::kTop : Surface::kSkin;
   }
-  if (part == "leftLeg" || part == "rightLeg") return p.y > 0.115f ? Surface::kTrousers : Surface::kShoes;
+  if (part == "leftLeg" || part == "rightLeg")
+    return p.y > 0.115f ? Surface::kTrousers : Surface::kShoes;
   if (part == "head" || part == "eyelids" || part == "nose") {
     const Surface face = face_colour_at(p);
     if (face != Surface::kSkin) return face;

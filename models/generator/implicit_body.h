@@ -23,7 +23,7 @@ namespace sw::avatar_generator {
 // What a surface point is made of; becomes a glTF material / primitive.
 enum class Surface : int {
   kSkin = 0,
-  kTop,       // long-sleeve top
+  kTop,  // long-sleeve top
   kTrousers,
   kShoes,
   kHair,
@@ -40,29 +40,27 @@ constexpr float kMouthY = 1.532f;  // height of the lip line (mouth slit centre)
 
 struct ImplicitPrimitive {
   enum class Kind { kRoundCone, kEllipsoid } kind = Kind::kRoundCone;
-  glm::vec3 a{0}, b{0};      // round cone: axis end points; ellipsoid: a = centre
-  float radius_a = 0.0f;     // round cone radii at a and b
+  glm::vec3 a{0}, b{0};   // round cone: axis end points; ellipsoid: a = centre
+  float radius_a = 0.0f;  // round cone radii at a and b
   float radius_b = 0.0f;
-  glm::vec3 radii{0};        // ellipsoid semi-axes (model axes)
+  glm::vec3 radii{0};  // ellipsoid semi-axes (model axes)
   // Round cone cross-section squash: distances along `squash_axis` are divided by `squash`
   // (wrists and feet are wider than deep).
   glm::vec3 squash_axis{0, 1, 0};
   float squash = 1.0f;
-  int part = 0;              // owning part
-  bool carve = false;        // subtracted from its part instead of added
-  float carve_k = 0.002f;    // smoothing of the subtraction
+  int part = 0;            // owning part
+  bool carve = false;      // subtracted from its part instead of added
+  float carve_k = 0.002f;  // smoothing of the subtraction
   Surface surface = Surface::kSkin;
-  int bone = -1;             // layout joint the surface near this primitive follows (skin weights)
-  int bone_end = -1;         // joint at the far end of that bone (the segment for weighting)
   // Conservative bounding box including the primitive's own extent.
   glm::vec3 box_min{0}, box_max{0};
 };
 
 struct ImplicitPart {
   std::string name;
-  int parent = -1;         // parts are ordered parents first
-  float blend_k = 0.0f;    // smooth-union radius with the parent part, metres
-  float inner_k = 0.0f;    // smooth-union radius between this part's own primitives
+  int parent = -1;       // parts are ordered parents first
+  float blend_k = 0.0f;  // smooth-union radius with the parent part, metres
+  float inner_k = 0.0f;  // smooth-union radius between this part's own primitives
 };
 
 struct SurfaceSample {

@@ -48,7 +48,7 @@ SkinWeights compute_skin_weights(const HumanoidLayout& layout, const ImplicitBod
       }
   }
   const std::map<std::string, std::string> chain_end = {
-      {"hips", "spine"},   {"spine", "chest"},       {"chest", "upperChest"},
+      {"hips", "spine"},      {"spine", "chest"}, {"chest", "upperChest"},
       {"upperChest", "neck"}, {"neck", "head"},
   };
   for (const auto& [from, to] : chain_end) segments[static_cast<size_t>(id(from))].b = J(to);
@@ -57,16 +57,17 @@ SkinWeights compute_skin_weights(const HumanoidLayout& layout, const ImplicitBod
     const std::string p = side;
     const float sign = p == "left" ? 1.0f : -1.0f;
     segments[static_cast<size_t>(id(p + "Shoulder"))].b = J(p + "UpperArm");
-    segments[static_cast<size_t>(id(p + "Hand"))].b = J(p + "Hand") + glm::vec3(sign * 0.035f, 0, 0);
+    segments[static_cast<size_t>(id(p + "Hand"))].b =
+        J(p + "Hand") + glm::vec3(sign * 0.035f, 0, 0);
     segments[static_cast<size_t>(id(p + "UpperLeg"))].b = J(p + "LowerLeg");
     segments[static_cast<size_t>(id(p + "Toes"))].b = J(p + "Toes") + glm::vec3(0, 0, 0.05f);
   }
 
   // Candidate joints per body part.
   std::map<std::string, std::vector<int>> candidates;
-  candidates["torso"] = {id("hips"),          id("spine"),         id("chest"),
-                         id("upperChest"),    id("leftShoulder"),  id("rightShoulder"),
-                         id("leftUpperLeg"),  id("rightUpperLeg")};
+  candidates["torso"] = {id("hips"),         id("spine"),        id("chest"),
+                         id("upperChest"),   id("leftShoulder"), id("rightShoulder"),
+                         id("leftUpperLeg"), id("rightUpperLeg")};
   candidates["neck"] = {id("upperChest"), id("neck"), id("head")};
   for (const char* part : {"head", "ears", "nose", "brows", "lips", "hair", "eyelids"})
     candidates[part] = {id("head")};

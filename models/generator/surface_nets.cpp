@@ -19,8 +19,8 @@ struct CellKey {
 };
 
 struct SignEdge {
-  int i, j, k;  // lower grid point
-  int axis;     // 0 x, 1 y, 2 z
+  int i, j, k;        // lower grid point
+  int axis;           // 0 x, 1 y, 2 z
   bool inside_first;  // the lower grid point is inside (negative)
 };
 
@@ -35,8 +35,8 @@ RawMesh polygonise_surface_nets(const ImplicitBody& body, float cell_m) {
                          static_cast<int>(std::ceil(extent.z / cell_m)));
   const glm::ivec3 blocks = (cells + glm::ivec3(kBlock - 1)) / kBlock;
   auto grid_point = [&](int i, int j, int k) {
-    return origin + glm::vec3(static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)) *
-                        cell_m;
+    return origin +
+           glm::vec3(static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)) * cell_m;
   };
 
   RawMesh mesh;
@@ -60,14 +60,15 @@ RawMesh polygonise_surface_nets(const ImplicitBody& body, float cell_m) {
         const glm::vec3 centre = 0.5f * (block_min + block_max);
         // The field is not exactly Euclidean (ellipsoids, blends): the 1.25 factor keeps the skip
         // test conservative.
-        if (std::fabs(body.sample(centre, near).distance) > 1.25f * half_diagonal + cell_m) continue;
+        if (std::fabs(body.sample(centre, near).distance) > 1.25f * half_diagonal + cell_m)
+          continue;
         const std::vector<int> active = body.primitives_near(block_min, block_max, margin);
         for (int i = 0; i <= kBlock; ++i)
           for (int j = 0; j <= kBlock; ++j)
             for (int k = 0; k <= kBlock; ++k)
-              at(i, j, k) = body.sample(grid_point(bi * kBlock + i, bj * kBlock + j, bk * kBlock + k),
-                                        active)
-                                .distance;
+              at(i, j, k) =
+                  body.sample(grid_point(bi * kBlock + i, bj * kBlock + j, bk * kBlock + k), active)
+                      .distance;
         for (int i = 0; i < kBlock; ++i)
           for (int j = 0; j < kBlock; ++j)
             for (int k = 0; k < kBlock; ++k) {
@@ -76,7 +77,8 @@ RawMesh polygonise_surface_nets(const ImplicitBody& body, float cell_m) {
               const float v0 = at(i, j, k);
               const float ends[3] = {at(i + 1, j, k), at(i, j + 1, k), at(i, j, k + 1)};
               for (int axis = 0; axis < 3; ++axis)
-                if ((v0 < 0.0f) != (ends[axis] < 0.0f)) edges.push_back({gi, gj, gk, axis, v0 < 0.0f});
+                if ((v0 < 0.0f) != (ends[axis] < 0.0f))
+                  edges.push_back({gi, gj, gk, axis, v0 < 0.0f});
               // Cell vertex: mean of the crossings on the cell's 12 edges.
               glm::vec3 sum(0.0f);
               int crossings = 0;
@@ -135,9 +137,11 @@ RawMesh polygonise_surface_nets(const ImplicitBody& body, float cell_m) {
     const float d02 = glm::length(mesh.positions[quad[0]] - mesh.positions[quad[2]]);
     const float d13 = glm::length(mesh.positions[quad[1]] - mesh.positions[quad[3]]);
     if (d02 <= d13) {
-      mesh.indices.insert(mesh.indices.end(), {quad[0], quad[1], quad[2], quad[0], quad[2], quad[3]});
+      mesh.indices.insert(mesh.indices.end(),
+                          {quad[0], quad[1], quad[2], quad[0], quad[2], quad[3]});
     } else {
-      mesh.indices.insert(mesh.indices.end(), {quad[0], quad[1], quad[3], quad[1], quad[2], quad[3]});
+      mesh.indices.insert(mesh.indices.end(),
+                          {quad[0], quad[1], quad[3], quad[1], quad[2], quad[3]});
     }
   }
   return mesh;

@@ -51,13 +51,16 @@ struct MorphTarget {
 struct Anchor {
   std::string name;         // see avatar/body_anchors.h for the naming scheme
   int joint = -1;           // skeleton joint it is attached to
-  glm::vec3 offset{0.0f};   // in the joint's model-space rest frame, metres
+  glm::vec3 offset{0.0f};   // in the joint's bind space (inverse_bind · point), metres:
+                            // posed point = model_matrix(joint) · offset, like a rigid vertex
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  // outward surface normal at the point, same frame
 };
 
 struct Avatar {
   skeleton::Skeleton skeleton;
-  std::vector<glm::mat4> inverse_bind;   // one per skeleton joint (identity for non-skinned)
+  // One per skeleton joint; for joints outside the glTF skin (tips, ancestors) the inverse of the
+  // rest model matrix, so "bind space" means the same for every joint.
+  std::vector<glm::mat4> inverse_bind;
   // canonical joint id (skeleton/humanoid_names.h) -> skeleton joint index, -1 if absent
   std::vector<int> canonical_to_joint;
   SkinnedMesh mesh;

@@ -75,8 +75,8 @@ Glb load_glb(const std::string& path) {
 // Reads any accessor as floats (componentType float, u8, u16, u32; no normalisation needed here).
 std::vector<float> read_accessor(const Glb& glb, int index, int* components = nullptr) {
   const json& accessor = glb.document["accessors"][static_cast<std::size_t>(index)];
-  static const std::map<std::string, int> kComponents = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3},
-                                                         {"VEC4", 4},   {"MAT4", 16}};
+  static const std::map<std::string, int> kComponents = {
+      {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT4", 16}};
   const int n = kComponents.at(accessor["type"].get<std::string>());
   if (components) *components = n;
   const std::size_t count = accessor["count"].get<std::size_t>();
@@ -86,7 +86,8 @@ std::vector<float> read_accessor(const Glb& glb, int index, int* components = nu
   const int type = accessor["componentType"].get<int>();
   const std::size_t size = type == 5126 || type == 5125 ? 4 : type == 5123 ? 2 : 1;
   const std::size_t stride = view.value("byteStride", size * static_cast<std::size_t>(n));
-  const std::size_t base = view.value("byteOffset", std::size_t{0}) + accessor.value("byteOffset", std::size_t{0});
+  const std::size_t base =
+      view.value("byteOffset", std::size_t{0}) + accessor.value("byteOffset", std::size_t{0});
   EXPECT_LE(base + (count - 1) * stride + size * static_cast<std::size_t>(n), glb.binary.size());
   for (std::size_t i = 0; i < count; ++i)
     for (int c = 0; c < n; ++c) {
@@ -111,12 +112,12 @@ std::vector<float> read_accessor(const Glb& glb, int index, int* components = nu
 }
 
 std::vector<std::string> canonical_joint_names() {
-  std::vector<std::string> names = {"hips", "spine", "chest", "upperChest", "neck",
+  std::vector<std::string> names = {"hips", "spine", "chest",   "upperChest", "neck",
                                     "head", "jaw",   "leftEye", "rightEye"};
   for (const std::string side : {"left", "right"}) {
-    for (const char* part : {"Shoulder", "UpperArm", "LowerArm", "Hand", "ThumbMetacarpal",
-                             "ThumbProximal", "ThumbDistal", "ThumbTip", "UpperLeg", "LowerLeg",
-                             "Foot", "Toes"})
+    for (const char* part :
+         {"Shoulder", "UpperArm", "LowerArm", "Hand", "ThumbMetacarpal", "ThumbProximal",
+          "ThumbDistal", "ThumbTip", "UpperLeg", "LowerLeg", "Foot", "Toes"})
       names.push_back(side + part);
     for (const char* finger : {"Index", "Middle", "Ring", "Little"})
       for (const char* part : {"Metacarpal", "Proximal", "Intermediate", "Distal", "Tip"})
@@ -150,7 +151,8 @@ class AvatarModel : public ::testing::Test {
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       glm::vec3 p(0.0f);
       for (int n = static_cast<int>(i); n >= 0; n = parent[static_cast<std::size_t>(n)]) {
-        const json& t = nodes[static_cast<std::size_t>(n)].value("translation", json::array({0, 0, 0}));
+        const json& t =
+            nodes[static_cast<std::size_t>(n)].value("translation", json::array({0, 0, 0}));
         p += glm::vec3(t[0].get<float>(), t[1].get<float>(), t[2].get<float>());
       }
       result[nodes[i].value("name", "")] = p;
@@ -182,7 +184,8 @@ class AvatarModel : public ::testing::Test {
     std::function<glm::mat4(std::size_t)> world_of = [&](std::size_t i) -> glm::mat4 {
       if (done[i]) return world[i];
       const json& t = nodes[i].value("translation", json::array({0, 0, 0}));
-      glm::mat4 local = glm::translate(glm::mat4(1.0f), glm::vec3(t[0].get<float>(), t[1].get<float>(), t[2].get<float>()));
+      glm::mat4 local = glm::translate(
+          glm::mat4(1.0f), glm::vec3(t[0].get<float>(), t[1].get<float>(), t[2].get<float>()));
       if (nodes[i].value("name", "") == joint_name) local = local * glm::mat4_cast(rotation);
       world[i] = parent[i] >= 0 ? world_of(static_cast<std::size_t>(parent[i])) * local : local;
       done[i] = true;
@@ -250,7 +253,8 @@ TEST_F(AvatarModel, BindPoseHasIdentityRotationsAndTranslationInverseBinds) {
     EXPECT_FALSE(node.contains("scale")) << node["name"];
   }
   const std::map<std::string, glm::vec3> bind = joint_positions();
-  const std::vector<float> inverse = read_accessor(*glb_, doc()["skins"][0]["inverseBindMatrices"].get<int>());
+  const std::vector<float> inverse =
+      read_accessor(*glb_, doc()["skins"][0]["inverseBindMatrices"].get<int>());
   const std::vector<std::string> joints = skin_joint_names();
   ASSERT_EQ(inverse.size(), joints.size() * 16);
   for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -287,7 +291,8 @@ TEST_F(AvatarModel, AdultProportions) {
   EXPECT_NEAR(forearm, 0.25f, 0.03f);
   // Fingers: middle longest, little shortest (anthropometric order).
   auto finger = [&](const char* f) {
-    return glm::length(p.at(std::string("left") + f + "Tip") - p.at(std::string("left") + f + "Proximal"));
+    return glm::length(p.at(std::string("left") + f + "Tip") -
+                       p.at(std::string("left") + f + "Proximal"));
   };
   EXPECT_GT(finger("Middle"), finger("Index"));
   EXPECT_GT(finger("Middle"), finger("Ring"));
@@ -296,7 +301,8 @@ TEST_F(AvatarModel, AdultProportions) {
   float lowest = 1e9f, highest = -1e9f;
   for (const json& mesh : doc()["meshes"])
     for (const json& primitive : mesh["primitives"]) {
-      const json& accessor = doc()["accessors"][primitive["attributes"]["POSITION"].get<std::size_t>()];
+      const json& accessor =
+          doc()["accessors"][primitive["attributes"]["POSITION"].get<std::size_t>()];
       lowest = std::min(lowest, accessor["min"][1].get<float>());
       highest = std::max(highest, accessor["max"][1].get<float>());
     }
@@ -322,7 +328,8 @@ TEST_F(AvatarModel, SkinWeightsNormalisedFourInfluencesAndTipsCarryNothing) {
   const std::vector<std::string> joints = skin_joint_names();
   std::set<std::size_t> tips;
   for (std::size_t j = 0; j < joints.size(); ++j)
-    if (joints[j].size() > 3 && joints[j].compare(joints[j].size() - 3, 3, "Tip") == 0) tips.insert(j);
+    if (joints[j].size() > 3 && joints[j].compare(joints[j].size() - 3, 3, "Tip") == 0)
+      tips.insert(j);
   EXPECT_EQ(tips.size(), 10u);
   std::set<std::size_t> used;
   std::size_t vertices = 0;
@@ -358,12 +365,13 @@ TEST_F(AvatarModel, SkinWeightsNormalisedFourInfluencesAndTipsCarryNothing) {
   EXPECT_GT(vertices, 5000u);
   // Every finger phalanx actually moves skin (a finger that does not bend is a lost sign).
   for (const std::string& name : canonical_joint_names()) {
-    if (name.find("Proximal") == std::string::npos && name.find("Intermediate") == std::string::npos &&
-        name.find("Distal") == std::string::npos)
+    if (name.find("Proximal") == std::string::npos &&
+        name.find("Intermediate") == std::string::npos && name.find("Distal") == std::string::npos)
       continue;
     const auto it = std::find(joints.begin(), joints.end(), name);
     ASSERT_NE(it, joints.end());
-    EXPECT_TRUE(used.count(static_cast<std::size_t>(it - joints.begin()))) << name << " moves no skin";
+    EXPECT_TRUE(used.count(static_cast<std::size_t>(it - joints.begin())))
+        << name << " moves no skin";
   }
 }
 
@@ -372,7 +380,8 @@ TEST_F(AvatarModel, EveryFaceChannelIsAMorphTargetThatMovesTheFace) {
   for (const json& mesh : doc()["meshes"])
     if (mesh.contains("extras") && mesh["extras"].contains("targetNames")) face = &mesh;
   ASSERT_NE(face, nullptr) << "no mesh with extras.targetNames";
-  const std::vector<std::string> names = (*face)["extras"]["targetNames"].get<std::vector<std::string>>();
+  const std::vector<std::string> names =
+      (*face)["extras"]["targetNames"].get<std::vector<std::string>>();
   std::vector<std::string> expected;
   for (std::string_view n : sw::face::kExpressionChannels) expected.emplace_back(n);
   for (std::string_view n : sw::face::kVisemeChannels) expected.emplace_back(n);
@@ -384,7 +393,8 @@ TEST_F(AvatarModel, EveryFaceChannelIsAMorphTargetThatMovesTheFace) {
   for (const json& primitive : (*face)["primitives"]) {
     ASSERT_EQ(primitive["targets"].size(), names.size());
     for (std::size_t t = 0; t < names.size(); ++t) {
-      const std::vector<float> d = read_accessor(*glb_, primitive["targets"][t]["POSITION"].get<int>());
+      const std::vector<float> d =
+          read_accessor(*glb_, primitive["targets"][t]["POSITION"].get<int>());
       for (std::size_t v = 0; v + 2 < d.size(); v += 3)
         largest[t] = std::max(largest[t], glm::length(glm::vec3(d[v], d[v + 1], d[v + 2])));
     }
@@ -407,7 +417,8 @@ TEST_F(AvatarModel, RestPoseSkinsToTheBindPose) {
 // vertex stays well outside the elbow's bone, at least 40 % of the arm's rest radius there.
 TEST_F(AvatarModel, ElbowFlexionDoesNotCollapse) {
   const glm::vec3 elbow = joint_positions().at("leftLowerArm");
-  const SkinnedVertices s = skin_with("leftLowerArm", glm::angleAxis(glm::radians(-90.0f), glm::vec3(0, 1, 0)));
+  const SkinnedVertices s =
+      skin_with("leftLowerArm", glm::angleAxis(glm::radians(-90.0f), glm::vec3(0, 1, 0)));
   float rest_radius = 1e9f, posed_min = 1e9f;
   std::size_t near_elbow = 0;
   for (std::size_t v = 0; v < s.rest.size(); ++v) {
@@ -423,7 +434,8 @@ TEST_F(AvatarModel, ElbowFlexionDoesNotCollapse) {
   const glm::vec3 wrist = joint_positions().at("leftHand");
   float farthest_forward = -1e9f;
   for (std::size_t v = 0; v < s.rest.size(); ++v)
-    if (glm::length(s.rest[v] - wrist) < 0.03f) farthest_forward = std::max(farthest_forward, s.posed[v].z);
+    if (glm::length(s.rest[v] - wrist) < 0.03f)
+      farthest_forward = std::max(farthest_forward, s.posed[v].z);
   EXPECT_GT(farthest_forward, elbow.z + 0.2f);
 }
 
@@ -436,7 +448,8 @@ TEST_F(AvatarModel, ElbowFlexionDoesNotCollapse) {
 TEST_F(AvatarModel, ForearmTwistDoesNotCandyWrap) {
   const std::map<std::string, glm::vec3> bind = joint_positions();
   const glm::vec3 elbow = bind.at("leftLowerArm"), wrist = bind.at("leftHand");
-  const SkinnedVertices s = skin_with("leftHand", glm::angleAxis(glm::radians(90.0f), glm::vec3(1, 0, 0)));
+  const SkinnedVertices s =
+      skin_with("leftHand", glm::angleAxis(glm::radians(90.0f), glm::vec3(1, 0, 0)));
   const float length = wrist.x - elbow.x;
   std::size_t checked = 0;
   for (std::size_t v = 0; v < s.rest.size(); ++v) {
@@ -456,7 +469,8 @@ TEST_F(AvatarModel, ForearmTwistDoesNotCandyWrap) {
 // neighbouring finger stays exactly where it was, which is what keeps fingers separate in a sign.
 TEST_F(AvatarModel, BendingOneFingerLeavesTheNeighbourAlone) {
   const std::map<std::string, glm::vec3> bind = joint_positions();
-  const SkinnedVertices s = skin_with("leftIndexProximal", glm::angleAxis(glm::radians(-90.0f), glm::vec3(0, 0, 1)));
+  const SkinnedVertices s =
+      skin_with("leftIndexProximal", glm::angleAxis(glm::radians(-90.0f), glm::vec3(0, 0, 1)));
   const glm::vec3 a = bind.at("leftMiddleIntermediate"), b = bind.at("leftMiddleTip");
   std::size_t middle = 0, index_moved = 0;
   for (std::size_t v = 0; v < s.rest.size(); ++v) {
@@ -466,7 +480,8 @@ TEST_F(AvatarModel, BendingOneFingerLeavesTheNeighbourAlone) {
       ++middle;
       EXPECT_NEAR(glm::length(s.posed[v] - s.rest[v]), 0.0f, 1e-6f);
     }
-    if (glm::length(s.rest[v] - bind.at("leftIndexTip")) < 0.012f && glm::length(s.posed[v] - s.rest[v]) > 0.03f)
+    if (glm::length(s.rest[v] - bind.at("leftIndexTip")) < 0.012f &&
+        glm::length(s.posed[v] - s.rest[v]) > 0.03f)
       ++index_moved;
   }
   EXPECT_GT(middle, 30u);
