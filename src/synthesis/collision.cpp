@@ -107,7 +107,9 @@ BodyModel build_body_model(const avatar::Avatar& avatar, const Rig& rig) {
     for (const auto& p : head_skin) hi = std::max(hi, glm::dot(p - head, rig.up));
     head_height = hi;
   }
-  glm::vec3 head_a = head - rig.up * (0.12f * head_height) + rig.forward * (0.12f * head_height);
+  // The lower end sits at the head joint, a little forward: with the radius it covers the jaw
+  // and chin without swallowing the space in front of the shoulders.
+  glm::vec3 head_a = head + rig.forward * (0.12f * head_height);
   glm::vec3 head_b = head + rig.up * (0.5f * head_height);
   float head_r = percentile_radius(head_skin, head_a, head_b, 0.7f, 0.27f * w);
   body.trunk.push_back(Capsule{"head", rig.head, head_a, head_b, head_r});

@@ -548,7 +548,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       t.auto_swivel = false;
       t.swivel_rad = h.swivel;
       bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
-      for (int attempt = 0; attempt < 4; ++attempt) {
+      for (int attempt = 0; attempt < 6; ++attempt) {
         ArmPose ap = solve_arm(rig, plan.side, t);
         apply_arm(rig, plan.side, ap, &pb);
         pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
@@ -558,7 +558,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         if (!ctx.options.avoid_collisions) break;
         Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
         if (pen.depth_m <= 0.002f) break;
-        t.point += pen.push_dir * (pen.depth_m + 0.004f);
+        // Out along the escape direction and a little forward (away from the body), which the
+        // arm can always follow.
+        t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
         if (attempt == 0) ++out->pushes;
       }
     }

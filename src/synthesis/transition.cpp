@@ -49,14 +49,16 @@ float max_penetration(const SynthContext& ctx, const glm::quat* frames, int fram
 namespace {
 
 void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<glm::quat>* delta,
-                 int joints, int k, std::vector<glm::quat>* out) {
+                 float via_tau, int joints, int k, std::vector<glm::quat>* out) {
   out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
   for (int i = 1; i < k; ++i) {
     float tau = static_cast<float>(i) / k;
     float e = minimum_jerk(tau);
-    // The via displacement fades in and out with zero slope at both ends (sin^2), peaking at the
-    // middle where e = 0.5, so the path passes exactly through the via-pose.
-    float w = std::sin(3.14159265f * tau);
+    // The via displacement fades in and out with zero slope at both ends (sin^2 of a phase that
+    // reaches 1/2 at the via time), peaking — zero slope again — where the direct path was
+    // worst, so the path passes exactly through the via-pose there.
+    float phase = tau <= via_tau ? 0.5f * tau / via_tau : 0.5f + 0.5f * (tau - via_tau) / (1.0f - via_tau);
+    float w = std::sin(3.14159265f * phase);
     w *= w;
     for (int j = 0; j < joints; ++j) {
       glm::quat q = slerp_shortest(a[j], b[j], e);
@@ -76,7 +78,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   TransitionPlan plan;
   plan.lmax_m = transition_lmax(rig, from, to);
   plan.k = transition_states(plan.lmax_m, fps, speed);
-  interpolate(from, to, nullptr, J, plan.k, &plan.frames);
+  interpolate(from, to, nullptr, 0.5f, J, plan.k, &plan.frames);
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
     for (int i = 1; i < k; ++i) {
@@ -95,8 +97,10 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
 
   // Route through a via-pose: the middle state with the offending hand(s) pulled out of the body
   // (along the escape direction and forward), re-solved by arm IK; orientation and fingers kept.
+  // The via-pose replaces the worst state of the direct path (its time kept for the re-timed path).
+  const float via_tau = std::min(0.8f, std::max(0.2f, static_cast<float>(worst + 1) / plan.k));
   std::vector<glm::quat> mid(J);
-  for (int j = 0; j < J; ++j) mid[j] = slerp_shortest(from[j], to[j], 0.5f);
+  for (int j = 0; j < J; ++j) mid[j] = slerp_shortest(from[j], to[j], minimum_jerk(via_tau));
   PoseBuilder worst_pose(rig);
   worst_pose.set_from_local(&plan.frames[static_cast<size_t>(worst) * J]);
   std::array<glm::vec3, 2> push{};
@@ -132,7 +136,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     p.lmax_m = l1 + l2;  // eq. (10) along the routed path
     p.k = transition_states(p.lmax_m, fps, speed);
     p.via_points = 1;
-    interpolate(from, to, &delta, J, p.k, &p.frames);
+    interpolate(from, to, &delta, via_tau, J, p.k, &p.frames);
     p.exempt = exempt_for(p.k);
     p.max_penetration_m = max_penetration(ctx, p.frames.data(), p.k - 1, p.exempt.data(), nullptr, nullptr);
     if (p.max_penetration_m < best.max_penetration_m) best = std::move(p);
