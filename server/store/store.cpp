@@ -19,9 +19,10 @@ namespace {
 
 using nlohmann::json;
 
-// Idle connections kept for reuse. Why 64: the HTTP pool's worker count by default; more idle
-// handles would only hold file descriptors and page caches nobody uses.
-constexpr std::size_t kMaxIdleConnections = 64;
+// Idle connections kept for reuse. Why 128: the HTTP server's default worker count, so that under
+// full load no request pays for opening a connection and compiling its statements again; more
+// idle handles would only hold file descriptors and page caches nobody uses.
+constexpr std::size_t kMaxIdleConnections = 128;
 
 std::string letter_kind(const std::string& letter) {
   std::vector<char32_t> cps = decode_utf8(letter);
