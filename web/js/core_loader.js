@@ -55,10 +55,14 @@ export function loadClassicScript(url) {
 }
 
 // Downloads the .wasm, reporting the fraction received (0..1) when the server sends its length.
+// A compressed response (Content-Encoding: gzip, which the Signweave server sends) has the
+// COMPRESSED size in Content-Length while the stream yields decompressed bytes, so its length
+// cannot measure progress: the chunks are collected and progress is reported at the end.
 async function fetchWasm(url, onProgress) {
   const response = await fetch(url);
   if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
-  const total = Number(response.headers.get('content-length')) || 0;
+  const encoded = (response.headers.get('content-encoding') || 'identity') !== 'identity';
+  const total = encoded ? 0 : Number(response.headers.get('content-length')) || 0;
   if (!response.body || !total) {
     const bytes = new Uint8Array(await response.arrayBuffer());
     onProgress(1);

@@ -1,0 +1,251 @@
+// renderer.js — WebGL2 drawing of what the core computed: the skinned avatar (vertex buffers skinned
+// in WebAssembly memory and uploaded with bufferSubData straight from a Float32Array view onto the
+// WASM heap — no JS copy per frame), the background gradient, the floor with a soft shadow, and the
+// debug skeleton/anchors. It does not animate, skin or decide anything: the core does.
+//
+// Limits: indices are 32-bit (core in WebGL2, needed above 65,535 vertices); one draw call per
+// glTF primitive/material; canvas backing store capped at 2× CSS pixels (a 3× phone would quadruple
+// fill cost on SwiftShader and mobile GPUs for no visible gain with MSAA on).
+
+import * as S from './shaders.js';
+
+const MAX_PIXEL_RATIO = 2;
+
+export class WebGL2Unavailable extends Error {}
+
+export class Renderer {
+  constructor(canvas) {
+    this.canvas = canvas;
+    const gl = canvas.getContext('webgl2', {
+      antialias: true,                 // MSAA on the default framebuffer
+      alpha: false,
+      depth: true,
+      premultipliedAlpha: false,
+      preserveDrawingBuffer: true,     // screenshots, pixel tests and MediaRecorder read the canvas
+      powerPreference: 'high-performance',
+    });
+    if (!gl) throw new WebGL2Unavailable('WebGL2 is not available in this browser');
+    this.gl = gl;
+    this.background = program(gl, S.BACKGROUND_VS, S.BACKGROUND_FS);
+    this.floor = program(gl, S.FLOOR_VS, S.FLOOR_FS);
+    this.avatar = program(gl, S.AVATAR_VS, S.AVATAR_FS);
+    this.debug = program(gl, S.DEBUG_VS, S.DEBUG_FS);
+    this.emptyVao = gl.createVertexArray();
+    this.floorVao = gl.createVertexArray();
+    gl.bindVertexArray(this.floorVao);
+    const quad = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, quad);
+    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 1, -1, -1, 1, 1, 1]), gl.STATIC_DRAW);
+    gl.enableVertexAttribArray(0);
+    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
+    this.debugVao = gl.createVertexArray();
+    gl.bindVertexArray(this.debugVao);
+    this.debugBuffer = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.debugBuffer);
+    gl.enableVertexAttribArray(0);
+    gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+    gl.bindVertexArray(null);
+    this.mesh = null;
+    this.shadowCentre = [0, 0];
+    this.bodyHeight_m = 1.7;
+    this.pixelRatio = 1;
+  }
+
+  // Static data, uploaded once per avatar: indices and materials; the vertex buffers are allocated
+  // here and refilled every frame by upload().
+  setMesh({ vertexCount, indices, primitives, materials }) {
+    const gl = this.gl;
+    if (this.mesh) {
+      gl.deleteVertexArray(this.mesh.vao);
+      gl.deleteBuffer(this.mesh.positions);
+      gl.deleteBuffer(this.mesh.normals);
+      gl.deleteBuffer(this.mesh.indices);
+    }
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const positions = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, positions);
+    gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
+    gl.enableVertexAttribArray(0);
+    gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+    const normals = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, normals);
+    gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
+    gl.enableVertexAttribArray(1);
+    gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 0, 0);
+    const indexBuffer = gl.createBuffer();
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indexBuffer);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
+    gl.bindVertexArray(null);
+    const drawn = primitives.length ? primitives : [{ first_index: 0, index_count: indices.length, material: 0 }];
+    this.mesh = {
+      vao, positions, normals, indices: indexBuffer, vertexCount,
+      primitives: drawn.map((p) => ({ ...p, look: lookOf(materials[p.material]) })),
+    };
+  }
+
+  // Per frame: the core's skinned positions/normals, as views onto WASM memory (no copy).
+  upload(positionsView, normalsView) {
+    if (!this.mesh) return;
+    const gl = this.gl;
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.mesh.positions);
+    gl.bufferSubData(gl.ARRAY_BUFFER, 0, positionsView);
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.mesh.normals);
+    gl.bufferSubData(gl.ARRAY_BUFFER, 0, normalsView);
+  }
+
+  // Debug overlay data: joint model positions (xyz per joint) with parent indices, and anchor points.
+  setDebugGeometry(jointPositions, parents, anchorPositions) {
+    const lines = [];
+    for (let j = 0; j < parents.length; j++) {
+      const p = parents[j];
+      if (p < 0) continue;
+      lines.push(jointPositions[p * 3], jointPositions[p * 3 + 1], jointPositions[p * 3 + 2],
+        jointPositions[j * 3], jointPositions[j * 3 + 1], jointPositions[j * 3 + 2]);
+    }
+    this.debugLines = new Float32Array(lines);
+    this.debugJoints = jointPositions;
+    this.debugAnchors = anchorPositions;
+  }
+
+  resize() {
+    const ratio = Math.min(window.devicePixelRatio || 1, MAX_PIXEL_RATIO);
+    const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio));
+    const height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
+    if (this.canvas.width !== width || this.canvas.height !== height) {
+      this.canvas.width = width;
+      this.canvas.height = height;
+    }
+    this.pixelRatio = ratio;
+    return width / height;
+  }
+
+  draw(camera, { showDebug = false } = {}) {
+    const gl = this.gl;
+    const aspect = this.resize();
+    camera.matrices(aspect);
+    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
+    gl.clearColor(0.9, 0.92, 0.95, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+
+    // Background: no depth.
+    gl.disable(gl.DEPTH_TEST);
+    gl.depthMask(false);
+    gl.useProgram(this.background.program);
+    gl.uniform3f(this.background.u.uTop, 0.93, 0.945, 0.965);
+    gl.uniform3f(this.background.u.uBottom, 0.74, 0.78, 0.83);
+    gl.bindVertexArray(this.emptyVao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+
+    // Floor with the blob shadow, blended, depth-tested against nothing yet but written for order.
+    gl.enable(gl.BLEND);
+    gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+    gl.useProgram(this.floor.program);
+    gl.uniformMatrix4fv(this.floor.u.uViewProj, false, camera.viewProjection);
+    gl.uniform1f(this.floor.u.uRadius, 1.6 * this.bodyHeight_m);
+    gl.uniform2f(this.floor.u.uShadowCentre, this.shadowCentre[0], this.shadowCentre[1]);
+    gl.uniform2f(this.floor.u.uShadowSize, 0.2 * this.bodyHeight_m, 0.13 * this.bodyHeight_m);
+    gl.uniform3f(this.floor.u.uFloorColor, 0.86, 0.87, 0.88);
+    gl.bindVertexArray(this.floorVao);
+    gl.drawArrays(gl.TRIANGLE_STRIP, 0, 4);
+    gl.disable(gl.BLEND);
+
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthMask(true);
+    gl.depthFunc(gl.LEQUAL);
+    if (this.mesh) this.drawAvatar(camera);
+    if (showDebug) this.drawDebug(camera);
+    gl.bindVertexArray(null);
+  }
+
+  drawAvatar(camera) {
+    const gl = this.gl;
+    const { u } = this.avatar;
+    gl.useProgram(this.avatar.program);
+    gl.uniformMatrix4fv(u.uViewProj, false, camera.viewProjection);
+    gl.uniform3fv(u.uEye, camera.eye);
+    // Three-point portrait lighting: warm key from the signer's upper right-front, cool fill from
+    // the other side, rim from behind; hemisphere ambient sky/ground.
+    gl.uniform3f(u.uKeyDir, -0.45, 0.75, 0.6);
+    gl.uniform3f(u.uKeyColor, 1.55, 1.45, 1.32);
+    gl.uniform3f(u.uFillDir, 0.6, 0.25, 0.55);
+    gl.uniform3f(u.uFillColor, 0.38, 0.42, 0.5);
+    gl.uniform3f(u.uRimDir, 0.2, 0.5, -1.0);
+    gl.uniform3f(u.uRimColor, 0.22, 0.24, 0.28);
+    gl.uniform3f(u.uSky, 0.46, 0.5, 0.56);
+    gl.uniform3f(u.uGround, 0.26, 0.24, 0.22);
+    // No back-face culling: the face has open surfaces (mouth, eyelids) seen from both sides.
+    gl.disable(gl.CULL_FACE);
+    gl.bindVertexArray(this.mesh.vao);
+    for (const p of this.mesh.primitives) {
+      const look = p.look;
+      gl.uniform4fv(u.uBaseColor, look.baseColor);
+      gl.uniform1f(u.uRoughness, look.roughness);
+      gl.uniform1f(u.uWrap, look.wrap);
+      gl.uniform3fv(u.uSubsurface, look.subsurface);
+      gl.drawElements(gl.TRIANGLES, p.index_count, gl.UNSIGNED_INT, p.first_index * 4);
+    }
+  }
+
+  drawDebug(camera) {
+    const gl = this.gl;
+    if (!this.debugLines) return;
+    const { u } = this.debug;
+    gl.disable(gl.DEPTH_TEST);   // the skeleton is inside the body: draw it on top
+    gl.useProgram(this.debug.program);
+    gl.uniformMatrix4fv(u.uViewProj, false, camera.viewProjection);
+    gl.bindVertexArray(this.debugVao);
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.debugBuffer);
+    gl.bufferData(gl.ARRAY_BUFFER, this.debugLines, gl.STREAM_DRAW);
+    gl.uniform4f(u.uColor, 0.05, 0.55, 0.35, 1);
+    gl.drawArrays(gl.LINES, 0, this.debugLines.length / 3);
+    gl.uniform1f(u.uPointSize, 4 * this.pixelRatio);
+    gl.bufferData(gl.ARRAY_BUFFER, this.debugJoints, gl.STREAM_DRAW);
+    gl.drawArrays(gl.POINTS, 0, this.debugJoints.length / 3);
+    if (this.debugAnchors && this.debugAnchors.length) {
+      gl.uniform4f(u.uColor, 0.85, 0.25, 0.55, 1);
+      gl.uniform1f(u.uPointSize, 5 * this.pixelRatio);
+      gl.bufferData(gl.ARRAY_BUFFER, this.debugAnchors, gl.STREAM_DRAW);
+      gl.drawArrays(gl.POINTS, 0, this.debugAnchors.length / 3);
+    }
+    gl.enable(gl.DEPTH_TEST);
+  }
+}
+
+// Skin gets wrap lighting and a warm scatter tint; cloth and hair a harder Lambert.
+function lookOf(material) {
+  const m = material || {};
+  const baseColor = m.base_color || [0.8, 0.8, 0.8, 1];
+  const name = (m.name || '').toLowerCase();
+  const isSkin = /skin|face|hand|body|lip/.test(name);
+  return {
+    baseColor: new Float32Array(baseColor),
+    roughness: m.roughness ?? 0.6,
+    wrap: isSkin ? 0.5 : 0.2,
+    subsurface: new Float32Array(isSkin ? [0.45, 0.12, 0.06] : [0, 0, 0]),
+  };
+}
+
+function program(gl, vsSource, fsSource) {
+  const compile = (type, source) => {
+    const shader = gl.createShader(type);
+    gl.shaderSource(shader, source);
+    gl.compileShader(shader);
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
+      throw new Error(`shader compile failed: ${gl.getShaderInfoLog(shader)}`);
+    }
+    return shader;
+  };
+  const p = gl.createProgram();
+  gl.attachShader(p, compile(gl.VERTEX_SHADER, vsSource));
+  gl.attachShader(p, compile(gl.FRAGMENT_SHADER, fsSource));
+  gl.linkProgram(p);
+  if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(`program link failed: ${gl.getProgramInfoLog(p)}`);
+  const u = {};
+  const count = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS);
+  for (let i = 0; i < count; i++) {
+    const info = gl.getActiveUniform(p, i);
+    u[info.name] = gl.getUniformLocation(p, info.name);
+  }
+  return { program: p, u };
+}
