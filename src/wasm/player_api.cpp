@@ -42,6 +42,8 @@
 #include "skeleton/humanoid_names.h"
 #include "skinning/avatar_instance.h"
 #include "skinning/skinning_job.h"
+#include "face/channel_set.h"
+#include "face/emotion.h"
 #include "synthesis/clip_export.h"
 #include "synthesis/clip_sampler.h"
 #include "synthesis/signing_avatar.h"
@@ -106,6 +108,19 @@ bool read_options(const std::string& text, sw::synthesis::SynthesisOptions* opti
   if (auto it = doc.find("left_handed"); it != doc.end()) {
     if (!it->is_boolean()) { *error = "option left_handed must be true or false"; return false; }
     options->left_handed = it->get<bool>();
+  }
+  // The face channel; the core validates the values (synthesis::validate_options).
+  if (auto it = doc.find("emotion"); it != doc.end()) {
+    if (!it->is_string()) { *error = "option emotion must be a string"; return false; }
+    options->emotion = it->get<std::string>();
+  }
+  if (auto it = doc.find("intensity"); it != doc.end()) {
+    if (!it->is_number()) { *error = "option intensity must be a number from 0 to 1"; return false; }
+    options->emotion_intensity = it->get<float>();
+  }
+  if (auto it = doc.find("mouthing"); it != doc.end()) {
+    if (!it->is_boolean()) { *error = "option mouthing must be true or false"; return false; }
+    options->mouthing = it->get<bool>();
   }
   if (auto it = doc.find("label"); it != doc.end() && label) {
     if (!it->is_string()) { *error = "option label must be a string"; return false; }
@@ -175,7 +190,14 @@ class Player {
     json anchors = json::array();
     for (const auto& an : a.anchors) anchors.push_back(an.name);
     json morphs = json::array();
-    for (const auto& m : a.morphs) morphs.push_back(m.name);
+    bool has_face_channels = false;
+    for (const auto& m : a.morphs) {
+      morphs.push_back(m.name);
+      has_face_channels = has_face_channels || sw::face::channel_index(m.name) >= 0;
+    }
+    // The page shows the face controls only for an avatar whose morph targets the face layer drives.
+    json face = nullptr;
+    if (has_face_channels) face = json{{"emotions", sw::face::emotion_names()}};
     // Stature from the bind-pose mesh: the camera frames the figure with it.
     float min_y = std::numeric_limits<float>::max(), max_y = std::numeric_limits<float>::lowest();
     for (const auto& p : a.mesh.positions) {
@@ -190,6 +212,7 @@ class Player {
                 {"materials", materials},
                 {"anchors", anchors},
                 {"morphs", morphs},
+                {"face", face},
                 {"height_m", a.mesh.positions.empty() ? 0.0f : max_y - min_y}}
         .dump(-1, ' ', false, json::error_handler_t::replace);
   }
