@@ -66,7 +66,8 @@ int check_command(const std::vector<std::string>& args) {
       if (!steps.empty()) out["steps"] = steps;
       if (with_spec) out["spec"] = notation::sign_to_json(*s.parse.spec);
     }
-    out["ok"] = sign_ok;
+    out["parsed"] = s.parse.ok();  // the notation alone, whatever the steps say
+    out["ok"] = sign_ok;           // parsed, and every step (synthesis) succeeded
     out["diagnostics"] = diagnostics;
     std::printf("%s\n", out.dump().c_str());
     ++signs;
