@@ -7,6 +7,7 @@
 #include <string>
 
 #include "notation/formula.h"
+#include "notation/seed_places.h"
 #include "notation/handshape.h"
 #include "notation/sign_spec_names.h"
 #include "notation/text_position.h"
@@ -128,24 +129,6 @@ std::string describe(const Token& t) {
   }
 }
 
-// Seed Table 2 localisations L_i (docs/NOTATION.md, "Seed localisation table").
-struct SeedPlace {
-  BodyLevel level;
-  Side side;
-};
-constexpr SeedPlace kSeedPlaces[] = {
-    {BodyLevel::Chest, Side::Right},        {BodyLevel::Chest, Side::Centre},
-    {BodyLevel::Chest, Side::Left},         {BodyLevel::NeutralSpace, Side::Centre},
-    {BodyLevel::NeutralSpace, Side::Right}, {BodyLevel::Forehead, Side::Centre},
-    {BodyLevel::Eyes, Side::Centre},        {BodyLevel::Nose, Side::Centre},
-    {BodyLevel::Mouth, Side::Centre},       {BodyLevel::Chin, Side::Centre},
-    {BodyLevel::Cheeks, Side::Right},       {BodyLevel::Ears, Side::Right},
-    {BodyLevel::Neck, Side::Centre},        {BodyLevel::Shoulders, Side::Right},
-    {BodyLevel::Waist, Side::Centre},       {BodyLevel::AboveHead, Side::Right},
-    {BodyLevel::Eyebrows, Side::Centre},    {BodyLevel::UnderChin, Side::Centre},
-    {BodyLevel::BelowWaist, Side::Right},
-};
-constexpr int kSeedPlaceCount = static_cast<int>(sizeof kSeedPlaces / sizeof kSeedPlaces[0]);
 
 // The parts of one hand term, before they are merged into the sign.
 struct HandTerm {

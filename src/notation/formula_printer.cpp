@@ -7,29 +7,13 @@
 #include <vector>
 
 #include "notation/formula.h"
+#include "notation/seed_places.h"
 #include "notation/handshape.h"
 #include "notation/sign_spec_names.h"
 
 namespace sw::notation {
 namespace {
 
-// Seed Table 2 places, the same table formula_parser.cpp reads (docs/NOTATION.md).
-struct SeedPlace {
-  BodyLevel level;
-  Side side;
-};
-constexpr SeedPlace kSeedPlaces[] = {
-    {BodyLevel::Chest, Side::Right},        {BodyLevel::Chest, Side::Centre},
-    {BodyLevel::Chest, Side::Left},         {BodyLevel::NeutralSpace, Side::Centre},
-    {BodyLevel::NeutralSpace, Side::Right}, {BodyLevel::Forehead, Side::Centre},
-    {BodyLevel::Eyes, Side::Centre},        {BodyLevel::Nose, Side::Centre},
-    {BodyLevel::Mouth, Side::Centre},       {BodyLevel::Chin, Side::Centre},
-    {BodyLevel::Cheeks, Side::Right},       {BodyLevel::Ears, Side::Right},
-    {BodyLevel::Neck, Side::Centre},        {BodyLevel::Shoulders, Side::Right},
-    {BodyLevel::Waist, Side::Centre},       {BodyLevel::AboveHead, Side::Right},
-    {BodyLevel::Eyebrows, Side::Centre},    {BodyLevel::UnderChin, Side::Centre},
-    {BodyLevel::BelowWaist, Side::Right},
-};
 
 bool same_finger(const FingerConfig& a, const FingerConfig& b) {
   return a.id == b.id && a.has_t == b.has_t && a.t == b.t && a.spread == b.spread;
