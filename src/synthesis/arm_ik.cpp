@@ -176,28 +176,112 @@ const ArmLimits& arm_limits() {
   return limits;
 }
 
+ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& p) {
+  const ArmRig& a = rig.arms[side];
+  const glm::vec3 s0 = rig.bind_pos[a.upper];
+  ArmSegments seg;
+  seg.shoulder = a.shoulder >= 0 ? rig.bind_pos[a.shoulder] + p.shoulder * (s0 - rig.bind_pos[a.shoulder]) : s0;
+  seg.elbow = seg.shoulder + p.upper * (rig.bind_pos[a.lower] - s0);
+  seg.wrist = seg.elbow + p.lower * (rig.bind_pos[a.hand] - rig.bind_pos[a.lower]);
+  return seg;
+}
+
+namespace {
+
+// Swivel candidates (radians, 0 elbow down, + elbow out): from the elbow a little in front of the
+// body (-34 deg: shoulder internal rotation, how a hand points out to its own side with the palm
+// down) to the elbow raised out to the side (115 deg: a hand at the chin or the opposite cheek
+// with the upper arm clear of the chest).
+constexpr float kSwivelLo = -1.6f, kSwivelStep = 0.2f;
+constexpr int kSwivelCandidates = 19;
+// Signers keep the elbow beside the body, not behind it: an elbow swung behind the body (the
+// arm wrapped round the head to realise an orientation the wrist cannot) is shoulder extension
+// with horizontal abduction near its limit. Beyond 12 cm behind the shoulder joint (a hand held at
+// the chest lets the elbow hang a little behind the body's mid-plane), each upper arm
+// length costs as much as 1 rad of orientation error, so the hand gives way first.
+float elbow_behind_cost(const Rig& rig, Side side, const ArmPose& p) {
+  const ArmRig& a = rig.arms[side];
+  ArmSegments seg = arm_segments(rig, side, p);
+  float behind = -glm::dot(seg.elbow - seg.shoulder, rig.forward) - 0.12f;
+  return behind > 0.0f ? 3.0f * behind / a.upper_len_m : 0.0f;
+}
+
+}  // namespace
+
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
-  if (!t.auto_swivel) return solve_at(rig, side, t, t.swivel_rad).pose;
+  auto clearance = [&](ArmPose* p) {
+    if (!t.body) return 0.0f;
+    p->trunk_depth_m = arm_trunk_depth(*t.body, side, arm_segments(rig, side, *p), t.hand_contact,
+                                       &p->trunk_push_dir);
+    return arm_trunk_cost(p->trunk_depth_m);
+  };
+  if (!t.auto_swivel) {
+    ArmPose p = solve_at(rig, side, t, t.swivel_rad).pose;
+    if (t.body) p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
+    return p;
+  }
   // Comfort heuristic: the elbow hangs down and a little out (25 deg), rising outwards for
   // targets above the shoulder; among candidates, the one that best realises the requested
-  // orientation (wrist within limits) and reaches, close to that preference, wins.
+  // orientation (wrist within limits), reaches and keeps the arm out of the trunk, close to that
+  // preference, wins.
   const ArmRig& a = rig.arms[side];
   glm::vec3 v = t.point - rig.bind_pos[a.upper];
   float height = glm::dot(v, rig.up) / (a.upper_len_m + a.lower_len_m);
   float preferred = 0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f);
   ArmPose best;
   float best_cost = 1e30f;
-  for (int i = 0; i < 9; ++i) {
-    float swivel = -0.2f + 0.2f * static_cast<float>(i);  // -11 .. 80 degrees
+  for (int i = 0; i < kSwivelCandidates; ++i) {
+    float swivel = kSwivelLo + kSwivelStep * static_cast<float>(i);
     ArmPose p = solve_at(rig, side, t, swivel).pose;
+    p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
     float cost = 3.0f * p.orientation_error_rad + 0.6f * std::fabs(swivel - preferred) +
-                 20.0f * p.reach_error_m;
+                 20.0f * p.reach_error_m + p.body_cost;
     if (cost < best_cost) {
       best_cost = cost;
       best = p;
     }
   }
   return best;
+}
+
+bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose) {
+  // 0.03: less than 1 mm beyond the trunk tolerance or 5 mm of elbow behind the body.
+  if (!t->body || pose->body_cost <= 0.03f) return false;
+  const glm::vec3 contact_to_wrist = -(t->hand_delta * t->contact_offset);
+  const glm::vec3 out = pose->trunk_depth_m > 0.002f ? pose->trunk_push_dir : rig.forward;
+  glm::vec3 axis = glm::cross(contact_to_wrist, out);
+  if (glm::length(axis) < 1e-5f) return false;
+  axis = glm::normalize(axis);  // turning about it swings the wrist towards the way out
+  auto score = [&](const ArmPose& p) {
+    return 3.0f * rotation_angle(glm::conjugate(t->hand_delta) * p.hand) + 20.0f * p.reach_error_m + p.body_cost;
+  };
+  ArmTarget turned = *t;
+  ArmPose best = *pose;
+  float best_score = score(*pose);
+  glm::quat best_delta = t->hand_delta;
+  for (int k = 1; k <= 8; ++k) {
+    turned.hand_delta = axis_angle(axis, 0.26f * static_cast<float>(k)) * t->hand_delta;
+    ArmPose p = solve_arm(rig, side, turned);
+    if (p.reach_error_m > pose->reach_error_m + 0.002f) continue;  // a touch must still touch
+    float sc = score(p);
+    // The smallest turn that frees the arm wins outright (a clear criterion: comparing scores
+    // alone would make near-equal alternatives flip with the compiler's rounding); failing
+    // that, the best score.
+    if (p.body_cost <= 0.03f) {
+      best = p;
+      best_delta = turned.hand_delta;
+      break;
+    }
+    if (sc < best_score - 1e-3f) {
+      best_score = sc;
+      best = p;
+      best_delta = turned.hand_delta;
+    }
+  }
+  if (best_delta == t->hand_delta) return false;
+  t->hand_delta = best_delta;
+  *pose = best;
+  return true;
 }
 
 void apply_arm(const Rig& rig, Side side, const ArmPose& p, PoseBuilder* b) {

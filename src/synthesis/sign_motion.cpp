@@ -191,6 +191,9 @@ struct Solver {
       t.point = st.target;
       t.contact_offset = st.offset;
       t.hand_delta = st.delta;
+      // The swivel keeps the arm out of the body (unless collision handling is off).
+      t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+      t.hand_contact = spec.location.kind == Location::Kind::Body && is_touch(spec.location.contact);
       ArmPose best = solve_arm(rig, plan.side, t);
       if (spec.location.kind == Location::Kind::NeutralSpace ||
           spec.location.level == BodyLevel::NeutralSpace) {
@@ -204,7 +207,9 @@ struct Solver {
         glm::vec3 base = st.target;
         t.auto_swivel = false;
         t.swivel_rad = best.swivel_rad;
-        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m;
+        // (The arm's depth in the trunk counts as in solve_arm.)
+        auto trunk_cost = [](const ArmPose& p) { return arm_trunk_cost(p.trunk_depth_m); };
+        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + trunk_cost(best);
         bool moved = false;
         glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
         for (float dx : {0.0f, 0.08f})
@@ -213,7 +218,8 @@ struct Solver {
             glm::vec3 shift = du * rig.up + dz * rig.forward + dx * outward;
             t.point = base + shift;
             ArmPose p = solve_arm(rig, plan.side, t);
-            float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(shift);
+            float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(shift) +
+                         trunk_cost(p);
             if (cost < best_cost) {
               best_cost = cost;
               best = p;
@@ -227,6 +233,9 @@ struct Solver {
           best = solve_arm(rig, plan.side, t);
         }
       }
+      // An orientation that puts the arm in the body gives way (arm_ik.h).
+      t.point = st.target;
+      if (turn_hand_out_of_body(rig, plan.side, &t, &best)) st.delta = t.hand_delta;
       st.swivel = best.swivel_rad;
     }
     return st;
@@ -529,6 +538,63 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     if (plans[i].exempt_trunk) exempt |= exempt_bit(plans[i].side, false);
     if (plans[i].exempt_hand) exempt |= exempt_bit(plans[i].side, true);
   }
+  // The arm itself: a swivel interpolated between two clear key poses can still take the elbow
+  // or forearm through the trunk (a movement across the body), or a forearm through the other
+  // one. Then this frame uses the nearest swivel that clears it (the hand's target, orientation
+  // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
+  auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
+                       PoseBuilder* pb) {
+    // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
+    // within its limits, and the hand must not turn into the body instead.
+    auto depth_of = [&]() {
+      return std::max(arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m,
+                      hand_penetration(ctx.body, *pb, plan.side, !plan.exempt_trunk, check_forearm).depth_m);
+    };
+    if (arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m <= 0.002f) return;
+    float depth = depth_of();
+    const float base = t->swivel_rad;
+    const float base_reach = solve_arm(rig, plan.side, *t).reach_error_m;
+    float best_depth = depth, best_swivel = base;
+    for (int k = 1; k <= 12 && best_depth > 0.002f; ++k) {
+      for (float sign : {1.0f, -1.0f}) {
+        t->swivel_rad = base + sign * 0.1f * static_cast<float>(k);
+        ArmPose ap = solve_arm(rig, plan.side, *t);
+        if (ap.reach_error_m > base_reach + 0.002f) continue;  // a touch must still touch
+        apply_arm(rig, plan.side, ap, pb);
+        pose_fingers(rig, plan.side, h.angles, ap.hand, pb);
+        pb->finalize();
+        float d = depth_of();
+        if (d < best_depth - 1e-4f) {
+          best_depth = d;
+          best_swivel = t->swivel_rad;
+        }
+        if (best_depth <= 0.002f) break;
+      }
+    }
+    t->swivel_rad = best_swivel;
+    ArmPose ap = solve_arm(rig, plan.side, *t);
+    if (best_depth > 0.002f) {
+      // No swivel clears it: the wrist itself is in the body; the hand turns out about its
+      // contact point (kept only if that helps the arm without pushing the hand in).
+      ArmTarget turned = *t;
+      ArmPose tp = ap;
+      if (turn_hand_out_of_body(rig, plan.side, &turned, &tp)) {
+        apply_arm(rig, plan.side, tp, pb);
+        pose_fingers(rig, plan.side, h.angles, tp.hand, pb);
+        pb->finalize();
+        float d = depth_of();
+        if (d < best_depth - 1e-4f) {
+          best_depth = d;
+          ap = tp;
+          *t = turned;
+        }
+      }
+    }
+    apply_arm(rig, plan.side, ap, pb);
+    pose_fingers(rig, plan.side, h.angles, ap.hand, pb);
+    pb->finalize();
+    if (best_swivel != base || t->hand_delta != h.delta) ++out->pushes;
+  };
   std::vector<glm::quat> rest_pose_deltas;
   PoseBuilder rest(rig);
   rest.set_from_local(ctx.rest_locals.data());
@@ -560,6 +626,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       t.hand_delta = h.delta;
       t.auto_swivel = false;
       t.swivel_rad = h.swivel;
+      t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+      t.hand_contact = plan.exempt_trunk;
       bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
       for (int attempt = 0; attempt < 6; ++attempt) {
         ArmPose ap = solve_arm(rig, plan.side, t);
@@ -576,6 +644,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
         if (attempt == 0) ++out->pushes;
       }
+      if (ctx.options.avoid_collisions) clear_arm(plan, check_hand, &t, h, &pb);
     }
     pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
     out->exempt[f] = exempt;

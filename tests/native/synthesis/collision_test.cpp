@@ -104,7 +104,11 @@ TEST(SynthesisCollision, HandInsideTheChestIsDetected) {
   notation::SignSpec s = sign_at(flat(), BodyLevel::Chest, Side::Centre, Contact::Touch);
   s.dominant.orientation.extended_finger = {0, 0, -1};  // fingers into the body
   s.dominant.orientation.palm = {0, -1, 0};
-  SynthesisResult r = synthesize_sign(s, av);
+  // The palm (not the fingertips) on the chest: the fingers then lie inside it.
+  s.dominant.location.contact_part = notation::HandPlace::Palm;
+  SynthesisOptions off;
+  off.avoid_collisions = false;  // else the hand turns out of the chest (arm_ik.h)
+  SynthesisResult r = synthesize_sign(s, av, off);
   ASSERT_TRUE(r.ok());
   // Touch is intended contact: exempt. Without the exemption the same frames penetrate.
   int f = first_sign_frame(r.clip);
