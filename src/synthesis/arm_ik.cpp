@@ -234,8 +234,12 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
     float swivel = kSwivelLo + kSwivelStep * static_cast<float>(i);
     ArmPose p = solve_at(rig, side, t, swivel).pose;
     p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
+    // For a touch, reach beyond 5 mm is steep (300 per metre): with the trunk cost in play a
+    // swivel that misses the touch by 2 cm could otherwise win, and a touch must touch (< 1 cm).
+    // A hand held off the body keeps the old trade (a centimetre or two is within its band).
+    float steep = t.hand_contact ? 300.0f * std::max(0.0f, p.reach_error_m - 0.005f) : 0.0f;
     float cost = 3.0f * p.orientation_error_rad + 0.6f * std::fabs(swivel - preferred) +
-                 20.0f * p.reach_error_m + p.body_cost;
+                 20.0f * p.reach_error_m + steep + p.body_cost;
     if (cost < best_cost) {
       best_cost = cost;
       best = p;
@@ -245,34 +249,49 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
 }
 
 bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose) {
-  // 0.03: less than 1 mm beyond the trunk tolerance or 5 mm of elbow behind the body.
-  if (!t->body || pose->body_cost <= 0.03f) return false;
+  // Only for a real conflict: the arm deeper in the trunk than the 5 mm rule allows, or the
+  // elbow clearly behind the body (a graze of a few mm is the swivel's and the per-frame fix's
+  // business; turning the hand 15 degrees for it would cost more than it saves).
+  if (!t->body) return false;
+  const float elbow_behind = pose->body_cost - arm_trunk_cost(pose->trunk_depth_m);
+  if (pose->trunk_depth_m <= 0.005f && elbow_behind <= 0.03f) return false;
+  // Two ways to swing the wrist out about the contact point: along the deepest segment's way
+  // out of the trunk, and forward (away from the body, which also brings an elbow from behind
+  // the body to its side).
   const glm::vec3 contact_to_wrist = -(t->hand_delta * t->contact_offset);
-  const glm::vec3 out = pose->trunk_depth_m > 0.002f ? pose->trunk_push_dir : rig.forward;
-  glm::vec3 axis = glm::cross(contact_to_wrist, out);
-  if (glm::length(axis) < 1e-5f) return false;
-  axis = glm::normalize(axis);  // turning about it swings the wrist towards the way out
+  glm::vec3 axes[2];
+  int n_axes = 0;
+  for (const glm::vec3& out : {pose->trunk_push_dir, rig.forward}) {
+    glm::vec3 axis = glm::cross(contact_to_wrist, out);
+    if (glm::length(axis) > 1e-5f) axes[n_axes++] = glm::normalize(axis);
+  }
+  // Scored against the REQUESTED orientation; a pose that leaves the arm in conflict pays a
+  // flat 1.0 (a third of a radian) on top of its body cost: breaking the 5 mm rule weighs more
+  // than the last few degrees of orientation.
   auto score = [&](const ArmPose& p) {
-    return 3.0f * rotation_angle(glm::conjugate(t->hand_delta) * p.hand) + 20.0f * p.reach_error_m + p.body_cost;
+    return 3.0f * rotation_angle(glm::conjugate(t->hand_delta) * p.hand) + 20.0f * p.reach_error_m +
+           (t->hand_contact ? 300.0f * std::max(0.0f, p.reach_error_m - 0.005f) : 0.0f) + p.body_cost +
+           (p.body_cost > 0.03f ? 1.0f : 0.0f);
   };
   ArmTarget turned = *t;
   ArmPose best = *pose;
   float best_score = score(*pose);
   glm::quat best_delta = t->hand_delta;
-  for (int k = 1; k <= 8; ++k) {
-    turned.hand_delta = axis_angle(axis, 0.26f * static_cast<float>(k)) * t->hand_delta;
-    ArmPose p = solve_arm(rig, side, turned);
-    if (p.reach_error_m > pose->reach_error_m + 0.002f) continue;  // a touch must still touch
-    float sc = score(p);
-    // The smallest turn that frees the arm wins outright (a clear criterion: comparing scores
-    // alone would make near-equal alternatives flip with the compiler's rounding); failing
-    // that, the best score.
-    if (p.body_cost <= 0.03f) {
-      best = p;
-      best_delta = turned.hand_delta;
-      break;
-    }
-    if (sc < best_score - 1e-3f) {
+  // The smallest turn (15 degree steps, up to 120) that frees the arm and scores better than not
+  // turning wins outright: a clear criterion, where comparing scores alone would let near-equal
+  // alternatives flip with the compiler's rounding. Failing that, the best-scoring turn.
+  bool freed = false;
+  for (int k = 1; k <= 8 && !freed; ++k) {
+    for (int i = 0; i < n_axes && !freed; ++i) {
+      turned.hand_delta = axis_angle(axes[i], 0.26f * static_cast<float>(k)) * t->hand_delta;
+      ArmPose p = solve_arm(rig, side, turned);
+      if (p.reach_error_m > pose->reach_error_m + 0.002f) continue;  // a touch must still touch
+      float sc = score(p);
+      if (p.body_cost <= 0.03f && sc < score(*pose)) {
+        freed = true;
+      } else if (!(sc < best_score - 1e-3f)) {
+        continue;
+      }
       best_score = sc;
       best = p;
       best_delta = turned.hand_delta;

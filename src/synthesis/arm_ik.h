@@ -60,9 +60,10 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& target);
 
 // When even the best swivel leaves the arm in the trunk or the elbow behind the body (a fingertip
 // touching the chest or forehead with the fingers pointing into it puts the wrist inside), a
-// signer turns the hand about its contact point until the arm is free: the smallest of the turns
-// of 15..120 degrees that swing the wrist out which frees it, else the one with the best score
-// (orientation error against the REQUESTED orientation plus the body cost), if better. Returns true (t->hand_delta and *pose updated) when a
+// signer turns the hand about its contact point until the arm is free: the smallest turn
+// (15..120 degrees, swinging the wrist out of the trunk or forward) that frees the arm and
+// scores better than not turning (orientation error against the REQUESTED orientation, reach,
+// body cost), else the best-scoring turn if it beats not turning. Returns true (t->hand_delta and *pose updated) when a
 // turn won. The orientation error it costs is the price of the 5 mm rule. Needs t->body.
 bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose);
 void apply_arm(const Rig& rig, Side side, const ArmPose& pose, PoseBuilder* builder);

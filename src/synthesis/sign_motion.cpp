@@ -207,26 +207,37 @@ struct Solver {
         glm::vec3 base = st.target;
         t.auto_swivel = false;
         t.swivel_rad = best.swivel_rad;
-        // (The arm's depth in the trunk counts as in solve_arm.)
-        auto trunk_cost = [](const ArmPose& p) { return arm_trunk_cost(p.trunk_depth_m); };
-        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + trunk_cost(best);
+        // (The body cost — arm in the trunk, elbow behind the body — counts as in solve_arm.)
+        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + best.body_cost;
         bool moved = false;
         glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
-        for (float dx : {0.0f, 0.08f})
-        for (float du : up_steps)
-          for (float dz : in_steps) {
-            glm::vec3 shift = du * rig.up + dz * rig.forward + dx * outward;
-            t.point = base + shift;
-            ArmPose p = solve_arm(rig, plan.side, t);
-            float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(shift) +
-                         trunk_cost(p);
-            if (cost < best_cost) {
-              best_cost = cost;
-              best = p;
-              st.target = t.point;
-              moved = true;
+        auto try_ring = [&](float dx) {
+          for (float du : up_steps)
+            for (float dz : in_steps) {
+              glm::vec3 shift = du * rig.up + dz * rig.forward + dx * outward;
+              t.point = base + shift;
+              ArmPose p = solve_arm(rig, plan.side, t);
+              float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m +
+                           1.5f * glm::length(shift) + p.body_cost;
+              if (cost < best_cost) {
+                best_cost = cost;
+                best = p;
+                st.target = t.point;
+                moved = true;
+              }
             }
-          }
+        };
+        try_ring(0.0f);
+        try_ring(0.08f);
+        // Further out to the hand's own side only while the orientation still misses by more
+        // than 10 degrees (so most signs pay nothing for it). Fingers pointing out to that side
+        // with the palm down need the forearm to point that way: from a hand in front of the
+        // chest the forearm points inwards and the wrist would need 45+ degrees of ulnar
+        // deviation (limit 35), and the elbow cannot come in front of the body to turn it (the
+        // trunk is there, see solve_arm); with the hand in front of the shoulder the elbow stays
+        // at the side and the forearm points out.
+        for (float dx : {0.16f, 0.24f})
+          if (best.orientation_error_rad > 0.17f) try_ring(dx);
         if (moved) {
           t.point = st.target;
           t.auto_swivel = true;
