@@ -230,8 +230,7 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
   float preferred = 0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f);
   ArmPose best;
   float best_cost = 1e30f;
-  for (int i = 0; i < kSwivelCandidates; ++i) {
-    float swivel = kSwivelLo + kSwivelStep * static_cast<float>(i);
+  auto consider = [&](float swivel) {
     ArmPose p = solve_at(rig, side, t, swivel).pose;
     p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
     // For a touch, reach beyond 5 mm is steep (300 per metre): with the trunk cost in play a
@@ -244,6 +243,15 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
       best_cost = cost;
       best = p;
     }
+  };
+  // Coarse to fine (the per-sign time budget): every other candidate first, then the two
+  // neighbours of the best one.
+  for (int i = 0; i < kSwivelCandidates; i += 2) consider(kSwivelLo + kSwivelStep * static_cast<float>(i));
+  const float coarse = best.swivel_rad;
+  for (float d : {-kSwivelStep, kSwivelStep}) {
+    float swivel = coarse + d;
+    if (swivel > kSwivelLo - 1e-4f && swivel < kSwivelLo + kSwivelStep * (kSwivelCandidates - 1) + 1e-4f)
+      consider(swivel);
   }
   return best;
 }
