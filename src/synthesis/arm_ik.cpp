@@ -188,10 +188,11 @@ ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& p) {
 
 namespace {
 
-// Swivel candidates (radians, 0 elbow down, + elbow out): from the elbow a little in front of the
-// body (-34 deg: shoulder internal rotation, how a hand points out to its own side with the palm
-// down) to the elbow raised out to the side (115 deg: a hand at the chin or the opposite cheek
-// with the upper arm clear of the chest).
+// Swivel candidates (radians, 0 elbow down, + elbow out): from the elbow in front of the body
+// (-92 deg: shoulder internal rotation; for a hand near the shoulder the "out" side of the circle
+// is behind the body, so "in" is where the elbow comes forward) to the elbow raised out to the
+// side (115 deg: a hand at the chin or the opposite cheek with the upper arm clear of the chest).
+// The body cost decides among them when the elbow would enter the trunk.
 constexpr float kSwivelLo = -1.6f, kSwivelStep = 0.2f;
 constexpr int kSwivelCandidates = 19;
 // Signers keep the elbow beside the body, not behind it: an elbow swung behind the body (the

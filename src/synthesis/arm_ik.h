@@ -10,7 +10,8 @@
 
 namespace sw::synthesis {
 
-// Anatomical limits (radians; degrees in comments) — joint limits everywhere.
+// Anatomical limits (radians; degrees in comments) — joint limits everywhere. Sources for the
+// forearm and wrist values (AAOS normal ranges, Ryu et al. 1991): docs/SYNTHESIS.md.
 struct ArmLimits {
   float elbow_flex_max = 2.62f;     // 150: a forearm cannot fold further onto the upper arm
   float twist_lo = -1.57f, twist_hi = 1.57f;  // forearm rotation +-90 from the bind's palm-down
