@@ -554,7 +554,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // one. Then this frame uses the nearest swivel that clears it (the hand's target, orientation
   // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
   auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
-                       PoseBuilder* pb) {
+                       PoseBuilder* pb, glm::quat* applied_turn) {
     // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
     // within its limits, and the hand must not turn into the body instead.
     auto depth_of = [&]() {
@@ -598,6 +598,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           best_depth = d;
           ap = tp;
           *t = turned;
+          *applied_turn = turned.hand_delta * glm::conjugate(h.delta);
         }
       }
     }
@@ -606,9 +607,14 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     pb->finalize();
     if (best_swivel != base || t->hand_delta != h.delta) ++out->pushes;
   };
-  std::vector<glm::quat> rest_pose_deltas;
   PoseBuilder rest(rig);
   rest.set_from_local(ctx.rest_locals.data());
+  // The hand turns clear_arm applied, per frame and hand (identity: none).
+  std::vector<std::array<glm::quat, 2>> turns(frames.size());
+  auto solve_frames = [&]() {
+  out->pushes = 0;
+  out->max_reach_error_m = 0.0f;
+  out->contact_distance_m.clear();
   for (int f = 0; f < out->frame_count; ++f) {
     PoseBuilder pb(rig);
     // Inactive hands keep the rest pose.
@@ -655,7 +661,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
         if (attempt == 0) ++out->pushes;
       }
-      if (ctx.options.avoid_collisions) clear_arm(plan, check_hand, &t, h, &pb);
+      turns[f][i] = glm::quat(1, 0, 0, 0);
+      if (ctx.options.avoid_collisions) clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i]);
     }
     pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
     out->exempt[f] = exempt;
@@ -681,6 +688,37 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         out->contact_distance_m.push_back(glm::length(mine.point - anchor.point));
       }
     }
+  }
+  };
+  solve_frames();
+  // A turn decided frame by frame starts (and ends) at once: the hand would jump (a 60 degree
+  // turn about a fingertip moves the wrist 17 cm in one frame). Ramp every turn in and out over
+  // the 6 frames around it (the largest of the neighbours' turns, scaled down linearly with the
+  // distance), fold the ramped turns into the frames' orientations, and solve once more.
+  constexpr int kRamp = 6;
+  bool any_turn = false;
+  for (const auto& ft : turns)
+    for (const auto& q : ft) any_turn = any_turn || rotation_angle(q) > 1e-3f;
+  if (any_turn) {
+    const int n = out->frame_count;
+    for (int i = 0; i < 2; ++i) {
+      std::vector<glm::quat> ramped(n);
+      for (int f = 0; f < n; ++f) {
+        glm::quat r = turns[f][i];
+        float best = rotation_angle(r);
+        for (int g = std::max(0, f - kRamp); g <= std::min(n - 1, f + kRamp); ++g) {
+          float w = 1.0f - static_cast<float>(std::abs(f - g)) / static_cast<float>(kRamp + 1);
+          float a = w * rotation_angle(turns[g][i]);
+          if (a > best + 1e-4f) {
+            best = a;
+            r = slerp_shortest(glm::quat(1, 0, 0, 0), turns[g][i], w);
+          }
+        }
+        ramped[f] = r;
+      }
+      for (int f = 0; f < n; ++f) frames[f].hand[i].delta = ramped[f] * frames[f].hand[i].delta;
+    }
+    solve_frames();
   }
   return true;
 }
