@@ -612,83 +612,83 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // The hand turns clear_arm applied, per frame and hand (identity: none).
   std::vector<std::array<glm::quat, 2>> turns(frames.size());
   auto solve_frames = [&]() {
-  out->pushes = 0;
-  out->max_reach_error_m = 0.0f;
-  out->contact_distance_m.clear();
-  for (int f = 0; f < out->frame_count; ++f) {
-    PoseBuilder pb(rig);
-    // Inactive hands keep the rest pose.
-    for (int i = 0; i < 2; ++i) {
-      if (plans[i].active) continue;
-      const ArmRig& a = rig.arms[plans[i].side];
-      for (int j = 0; j < J; ++j) {
-        int p = j;
-        while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
-        if (p >= 0) pb.set(j, rest.delta(j));
-      }
-    }
-    pb.finalize();
-    for (int oi = 0; oi < 2; ++oi) {
-      int i = order[oi];
-      const HandPlan& plan = plans[i];
-      if (!plan.active) continue;
-      const HandState& h = frames[f].hand[i];
-      ArmTarget t;
-      t.point = h.target;
-      if (plan.on_other_hand) {
-        PartPoint place = solver.other_hand_place(pb, plan);
-        t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
-      }
-      t.contact_offset = h.offset;
-      t.hand_delta = h.delta;
-      t.auto_swivel = false;
-      t.swivel_rad = h.swivel;
-      t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
-      t.hand_contact = plan.exempt_trunk;
-      bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
-      for (int attempt = 0; attempt < 6; ++attempt) {
-        ArmPose ap = solve_arm(rig, plan.side, t);
-        apply_arm(rig, plan.side, ap, &pb);
-        pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
-        pb.finalize();
-        if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact))
-          out->max_reach_error_m = std::max(out->max_reach_error_m, ap.reach_error_m);
-        if (!ctx.options.avoid_collisions) break;
-        Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
-        if (pen.depth_m <= 0.002f) break;
-        // Out along the escape direction and a little forward (away from the body), which the
-        // arm can always follow.
-        t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
-        if (attempt == 0) ++out->pushes;
-      }
-      turns[f][i] = glm::quat(1, 0, 0, 0);
-      if (ctx.options.avoid_collisions) clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i]);
-    }
-    pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
-    out->exempt[f] = exempt;
-    if (f == 0) {
-      // Measured distances of the contact parts to their places (acceptance: < 1 cm with touch,
-      // 3-10 cm without).
+    out->pushes = 0;
+    out->max_reach_error_m = 0.0f;
+    out->contact_distance_m.clear();
+    for (int f = 0; f < out->frame_count; ++f) {
+      PoseBuilder pb(rig);
+      // Inactive hands keep the rest pose.
       for (int i = 0; i < 2; ++i) {
+        if (plans[i].active) continue;
+        const ArmRig& a = rig.arms[plans[i].side];
+        for (int j = 0; j < J; ++j) {
+          int p = j;
+          while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
+          if (p >= 0) pb.set(j, rest.delta(j));
+        }
+      }
+      pb.finalize();
+      for (int oi = 0; oi < 2; ++oi) {
+        int i = order[oi];
         const HandPlan& plan = plans[i];
         if (!plan.active) continue;
-        HandPlace place;
-        int finger;
-        contact_part(plan.spec, &place, &finger);
-        PartPoint mine = hand_part(pb, plan.side, place, finger);
-        PartPoint anchor;
+        const HandState& h = frames[f].hand[i];
+        ArmTarget t;
+        t.point = h.target;
         if (plan.on_other_hand) {
-          anchor = solver.other_hand_place(pb, plan);
-        } else if (plan.spec.location.kind == Location::Kind::Body) {
-          if (!anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
-            continue;
-        } else {
-          continue;
+          PartPoint place = solver.other_hand_place(pb, plan);
+          t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
         }
-        out->contact_distance_m.push_back(glm::length(mine.point - anchor.point));
+        t.contact_offset = h.offset;
+        t.hand_delta = h.delta;
+        t.auto_swivel = false;
+        t.swivel_rad = h.swivel;
+        t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+        t.hand_contact = plan.exempt_trunk;
+        bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
+        for (int attempt = 0; attempt < 6; ++attempt) {
+          ArmPose ap = solve_arm(rig, plan.side, t);
+          apply_arm(rig, plan.side, ap, &pb);
+          pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
+          pb.finalize();
+          if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact))
+            out->max_reach_error_m = std::max(out->max_reach_error_m, ap.reach_error_m);
+          if (!ctx.options.avoid_collisions) break;
+          Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
+          if (pen.depth_m <= 0.002f) break;
+          // Out along the escape direction and a little forward (away from the body), which the
+          // arm can always follow.
+          t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
+          if (attempt == 0) ++out->pushes;
+        }
+        turns[f][i] = glm::quat(1, 0, 0, 0);
+        if (ctx.options.avoid_collisions) clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i]);
+      }
+      pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
+      out->exempt[f] = exempt;
+      if (f == 0) {
+        // Measured distances of the contact parts to their places (acceptance: < 1 cm with touch,
+        // 3-10 cm without).
+        for (int i = 0; i < 2; ++i) {
+          const HandPlan& plan = plans[i];
+          if (!plan.active) continue;
+          HandPlace place;
+          int finger;
+          contact_part(plan.spec, &place, &finger);
+          PartPoint mine = hand_part(pb, plan.side, place, finger);
+          PartPoint anchor;
+          if (plan.on_other_hand) {
+            anchor = solver.other_hand_place(pb, plan);
+          } else if (plan.spec.location.kind == Location::Kind::Body) {
+            if (!anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
+              continue;
+          } else {
+            continue;
+          }
+          out->contact_distance_m.push_back(glm::length(mine.point - anchor.point));
+        }
       }
     }
-  }
   };
   solve_frames();
   // A turn decided frame by frame starts (and ends) at once: the hand would jump (a 60 degree
