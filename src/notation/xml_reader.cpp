@@ -263,4 +263,17 @@ std::string xml_escape(std::string_view text) {
   return out;
 }
 
+Diagnostic diagnostic_at(const XmlElement& e, std::string symbol, std::string message,
+                         Severity severity) {
+  Diagnostic d;
+  d.severity = severity;
+  d.offset = e.offset;
+  d.length = e.length;
+  d.line = e.line;
+  d.column = e.column;
+  d.symbol = std::move(symbol);
+  d.message = std::move(message);
+  return d;
+}
+
 }  // namespace sw::notation
