@@ -265,15 +265,7 @@ std::string xml_escape(std::string_view text) {
 
 Diagnostic diagnostic_at(const XmlElement& e, std::string symbol, std::string message,
                          Severity severity) {
-  Diagnostic d;
-  d.severity = severity;
-  d.offset = e.offset;
-  d.length = e.length;
-  d.line = e.line;
-  d.column = e.column;
-  d.symbol = std::move(symbol);
-  d.message = std::move(message);
-  return d;
+  return Diagnostic{severity, e.offset, e.length, e.line, e.column, std::move(symbol), std::move(message)};
 }
 
 }  // namespace sw::notation
