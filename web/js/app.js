@@ -16,6 +16,9 @@ import { transformPoint } from './mat4.js';
 import { Playback } from './playback.js';
 import { Renderer, WebGL2Unavailable } from './renderer.js';
 import { SigningCore } from './signing_core.js';
+import { mark, markTime, measure, startupBreakdown } from './startup_metrics.js';
+
+mark('app-start');
 
 const AVATAR_URL = 'models/signweave-avatar.glb';
 const $ = (id) => document.getElementById(id);
@@ -24,7 +27,12 @@ const metrics = {
   firstSigningFrame_ms: null,   // performance.now() of the first frame drawn while a clip plays
   frameWork_ms: 0,              // last frame's pose + skinning + upload on the main thread
   frameWorkSamples: [],         // the last 240 of them (bench/web_bench.mjs reads percentiles)
+  frameUpdateSamples: [],       // the same frames' core.update alone (sample + FK + skinning in WASM)
+  frameUploadSamples: [],       // and their bufferSubData uploads alone
   frames: 0,
+  // The start-up timeline (startup_metrics.js): marks in ms since navigation, measured spans, and
+  // the Resource Timing waterfall of the page's files.
+  get startup() { return startupBreakdown(); },
 };
 const api = new ApiClient();
 const camera = new OrbitCamera();
@@ -127,7 +135,9 @@ async function boot() {
   // The dictionary needs no 3D view: languages load whatever happens to WebGL2 or the core.
   const languagesPromise = loadLanguages();
   try {
+    mark('renderer-start');
     renderer = new Renderer($('view'));
+    mark('renderer-created');
   } catch (err) {
     const message = err instanceof WebGL2Unavailable
       ? 'This browser cannot draw the avatar: WebGL2 is missing or disabled. Try a current Firefox, Chrome, Edge or Safari, or enable hardware acceleration.'
@@ -141,7 +151,7 @@ async function boot() {
   try {
     [core, avatarBytes] = await Promise.all([
       SigningCore.create({ onProgress: (f) => { coreFraction = f; progress(); } }),
-      fetchWithProgress(AVATAR_URL, (f) => { avatarFraction = f; progress(); }),
+      fetchWithProgress(AVATAR_URL, (f) => { avatarFraction = f; progress(); }).then((bytes) => { mark('avatar-fetched'); return bytes; }),
     ]);
   } catch (err) {
     fail(err instanceof TypeError && /fetch/i.test(err.message)
@@ -150,10 +160,13 @@ async function boot() {
     return;
   }
   state.flavour = core.flavour;
+  mark('avatar-parse-start');
   const avatarError = core.loadAvatar(avatarBytes);
   if (avatarError) { fail(`The avatar could not be loaded: ${avatarError}`); return; }
+  mark('avatar-parsed');
   const info = core.info;
   renderer.setMesh({ vertexCount: info.vertex_count, indices: core.indices(), primitives: info.primitives, materials: info.materials });
+  mark('mesh-uploaded');
   renderer.bodyHeight_m = info.height_m || 1.7;
   camera.fitTo(info.height_m);
   setupFace(info);
@@ -161,6 +174,7 @@ async function boot() {
   setProgress(1);
   $('loading').hidden = true;
   state.ready = true;
+  mark('ready');
   route();
 }
 
@@ -269,8 +283,10 @@ const dictionary = new Dictionary({
   api, language,
   symbolNames: (text, format) => (core && (format === 'hamnosys' || format === 'hsigml') ? core.hamnosysNames(text) : []),
   onOpen: (sign) => {
+    mark('sign-fetched');
     phrase.clearCaption();
     const result = playNotation(sign.notation, sign.format, sign.gloss, { loop: true });
+    mark('sign-synthesised');
     if (!result.ok) dictionary.setStatus(`This sign cannot be played: ${describeFailure(result)}`, true);
   },
 });
@@ -324,6 +340,7 @@ function route() {
   if (lang && [...$('language').options].some((o) => o.value === lang)) $('language').value = lang;
   if (path.startsWith('/sign/')) {
     showPane('dictionary');
+    if (state.ready) mark('sign-requested');
     if (state.ready) dictionary.open(decodeURIComponent(path.slice('/sign/'.length)));
   } else if (path === '/phrase') {
     showPane('phrase');
@@ -428,24 +445,46 @@ function frame(now) {
     if (poseDirty) {
       const start = performance.now();
       const views = core.update(playback.time_s);
+      const updated = performance.now();
       renderer.upload(views.positions, views.normals);
-      metrics.frameWork_ms = performance.now() - start;
-      metrics.frameWorkSamples.push(metrics.frameWork_ms);
-      if (metrics.frameWorkSamples.length > 240) metrics.frameWorkSamples.shift();
+      const end = performance.now();
+      metrics.frameWork_ms = end - start;
+      pushSample(metrics.frameWorkSamples, metrics.frameWork_ms);
+      pushSample(metrics.frameUpdateSamples, updated - start);
+      pushSample(metrics.frameUploadSamples, end - updated);
       if (debugVisible) renderer.setDebugGeometry(views.jointPositions, core.info.parents, views.anchorPositions);
       updateFraming(views.jointPositions, views.anchorPositions);
       poseDirty = false;
     }
     renderer.draw(camera, { showDebug: debugVisible });
     metrics.frames++;
+    if (markTime('first-avatar-frame') === null) mark('first-avatar-frame');
     if (metrics.firstSigningFrame_ms === null && playback.playing && playback.time_s > 0) {
-      metrics.firstSigningFrame_ms = performance.now();
+      metrics.firstSigningFrame_ms = mark('first-signing-frame');
+      measureStartup();
     }
   } else if (renderer) {
     renderer.draw(camera);
   }
   publishState();
   requestAnimationFrame(frame);
+}
+
+function pushSample(samples, value) {
+  samples.push(value);
+  if (samples.length > 240) samples.shift();
+}
+
+// The spans of the start-up worth reading at a glance (the marks themselves hold the rest).
+function measureStartup() {
+  measure('shader-programs', 'renderer-start', 'renderer-created');
+  measure('wasm-download', 'wasm-fetch-start', 'wasm-fetched');
+  measure('wasm-glue-and-compile', 'wasm-fetched', 'wasm-instantiated');
+  measure('avatar-parse', 'avatar-parse-start', 'avatar-parsed');
+  measure('mesh-upload', 'avatar-parsed', 'mesh-uploaded');
+  measure('sign-fetch', 'sign-requested', 'sign-fetched');
+  measure('synthesis', 'sign-fetched', 'sign-synthesised');
+  measure('to-first-signing-frame', 'sign-synthesised', 'first-signing-frame');
 }
 
 // The hands close-up frames neutral signing space (the body anchor space/centre, where most signs

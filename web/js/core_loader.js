@@ -16,6 +16,8 @@
 // Does not: cache across page loads (the HTTP cache does), or load both flavours at once (they
 // define the same global).
 
+import { mark } from './startup_metrics.js';
+
 // (module (func (result v128) i32.const 0 i32x4.splat)) — valid only where SIMD is supported.
 const SIMD_PROBE = new Uint8Array([
   0x00, 0x61, 0x73, 0x6d, 0x01, 0x00, 0x00, 0x00, // magic, version 1
@@ -86,9 +88,12 @@ async function fetchWasm(url, onProgress) {
 async function instantiate(flavour, baseUrl, loadScript, moduleArgs, onProgress) {
   const jsUrl = new URL(`signweave-${flavour}.js`, baseUrl).href;
   const extra = typeof moduleArgs === 'function' ? moduleArgs(flavour) : moduleArgs;
+  mark('wasm-fetch-start');
   const wasmBinary = extra.wasmBinary ?? (await fetchWasm(new URL(`signweave-${flavour}.wasm`, baseUrl).href, onProgress));
+  mark('wasm-fetched');
   delete globalThis.createSignweave;
   await loadScript(jsUrl);
+  mark('wasm-script-loaded');
   const factory = globalThis.createSignweave;
   if (typeof factory !== 'function') throw new Error(`${jsUrl} did not define createSignweave`);
   const module = await factory({
@@ -97,6 +102,7 @@ async function instantiate(flavour, baseUrl, loadScript, moduleArgs, onProgress)
     ...extra,
     wasmBinary,
   });
+  mark('wasm-instantiated');
   onProgress(1);
   return { module, flavour };
 }
