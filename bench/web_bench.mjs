@@ -6,7 +6,10 @@
 //   web.startup.span.<name>_ms  how long the steps took (wasm download, avatar parse, synthesis...)
 //   web.startup.resource.<file> when each file finished downloading in the last run (value: end, ms)
 //   web.frame_update_ms_* / web.frame_upload_ms_*  the two parts of the frame work
+//   web.frames_skipped_share    frames not drawn while the GPU was still busy with earlier ones
 //   web.load_average_1m         the machine's load while measuring (timings are noisy under load)
+// WEB_BENCH_RUNS=N changes the number of runs (default 5); WEB_BENCH_WEB=DIR serves that copy of
+// web/ instead of this one.
 // Prints JSON lines {"name", "value", "unit"}. Cold cache per run (a fresh browser context); the
 // median of RUNS runs is reported; frame samples are pooled over every run. SwiftShader renders on the CPU, so the GPU-side cost here is an
 // upper bound of a real GPU's; the WASM work is what a user's CPU does.
@@ -22,13 +25,15 @@ const emit = (name, value, unit, extra = {}) => console.log(JSON.stringify({ nam
 
 let server, browser;
 try {
-  server = await startServer();
+  // WEB_BENCH_WEB=DIR serves another copy of web/ (an older page, for a before/after comparison).
+  server = await startServer({ extraArgs: process.env.WEB_BENCH_WEB ? ['--web', process.env.WEB_BENCH_WEB] : [] });
   browser = await launchBrowser();
   const list = await (await fetch(`${server.base}/api/signs?q=&limit=1`)).json();
   const first = (list.hits)[0];
   const firstFrames = [], transfers = [];
   const samples = [], updates = [], uploads = [], startups = [];
   let flavour = '';
+  let drawn = 0, skipped = 0;
   const loads = [os.loadavg()[0]];
   for (let run = 0; run < RUNS; run++) {
     const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
@@ -49,8 +54,9 @@ try {
     // The samples start at the first posed frame (the page keeps the last 240): the first frames'
     // lazy work and the sign switch count, as a user would feel them.
     await page.waitForTimeout(PLAY_MS);
-    const frame = await page.evaluate(() => { const m = window.signweave.metrics; return { work: m.frameWorkSamples, update: m.frameUpdateSamples, upload: m.frameUploadSamples }; });
+    const frame = await page.evaluate(() => { const m = window.signweave.metrics; return { work: m.frameWorkSamples, update: m.frameUpdateSamples, upload: m.frameUploadSamples, drawn: m.frames, skipped: m.framesSkipped }; });
     samples.push(...frame.work); updates.push(...frame.update); uploads.push(...frame.upload);
+    drawn += frame.drawn; skipped += frame.skipped;
     await context.close();
     loads.push(os.loadavg()[0]);
   }
@@ -59,6 +65,8 @@ try {
   emit('web.frame_work_ms_p50', percentile(samples, 0.5), 'ms', { target: 2, flavour, frames: samples.length });
   emit('web.frame_work_ms_p95', percentile(samples, 0.95), 'ms', { target: 2, flavour, frames: samples.length });
   emit('web.frame_work_ms_max', percentile(samples, 1), 'ms', { flavour, frames: samples.length });
+  // Frames not drawn because the GPU had not finished the previous ones (SwiftShader on a busy CPU).
+  emit('web.frames_skipped_share', skipped / Math.max(1, drawn + skipped), 'ratio', { drawn, skipped });
   for (const [name, xs] of [['update', updates], ['upload', uploads]]) {
     emit(`web.frame_${name}_ms_p50`, percentile(xs, 0.5), 'ms', { frames: xs.length });
     emit(`web.frame_${name}_ms_p95`, percentile(xs, 0.95), 'ms', { frames: xs.length });
