@@ -180,9 +180,6 @@ async function boot() {
     mark('renderer-start');
     renderer = new Renderer($('view'));
     mark('renderer-created');
-    renderer.warmUp(camera);   // waits for the programs' link here, while the downloads run
-    mark('renderer-warmed');
-    idleDrawn = true;          // the warm-up drew the loading background
   } catch (err) {
     fail(rendererFailure(err));
     return;
@@ -500,22 +497,6 @@ $('export-webm').addEventListener('click', async (e) => {
 // --------------------------------------------------------------------------------- the frame loop
 let last = performance.now();
 let idleDrawn = false;
-let drawn = false;              // the canvas shows the current pose
-
-// What the last drawn picture was seen from. A still picture is not redrawn: redrawing it 60 times
-// a second kept SwiftShader (or a weak GPU) busy, so the first frame of a sign waited behind
-// copies of the rest pose, and an idle page used a core.
-const shownView = new Float64Array(10).fill(NaN);
-function viewChanged() {
-  const c = camera.current, canvas = renderer.canvas;
-  const values = [c.yaw, c.pitch, c.distance, c.target[0], c.target[1], c.target[2],
-    canvas.clientWidth, canvas.clientHeight, window.devicePixelRatio || 1, debugVisible ? 1 : 0];
-  let changed = false;
-  for (let i = 0; i < values.length; i++) {
-    if (shownView[i] !== values[i]) { shownView[i] = values[i]; changed = true; }
-  }
-  return changed;
-}
 function frame(now) {
   const dt = (now - last) / 1000;
   last = now;
@@ -538,13 +519,9 @@ function frame(now) {
       if (debugVisible) renderer.setDebugGeometry(views.jointPositions, core.info.parents, views.anchorPositions);
       updateFraming(views.jointPositions, views.anchorPositions);
       poseDirty = false;
-      drawn = false;
     }
-    if (viewChanged() || !drawn) {
-      renderer.draw(camera, { showDebug: debugVisible });
-      drawn = true;
-    }
-    metrics.frames++;   // the canvas shows this frame's state (drawn now, or unchanged since)
+    renderer.draw(camera, { showDebug: debugVisible });
+    metrics.frames++;
     if (markTime('first-avatar-frame') === null) mark('first-avatar-frame');
     if (metrics.firstSigningFrame_ms === null && playback.playing && playback.time_s > 0) {
       metrics.firstSigningFrame_ms = mark('first-signing-frame');
@@ -568,7 +545,6 @@ function pushSample(samples, value) {
 // The spans of the start-up worth reading at a glance (the marks themselves hold the rest).
 function measureStartup() {
   measure('renderer-create', 'renderer-start', 'renderer-created');
-  measure('renderer-warm-up', 'renderer-created', 'renderer-warmed');
   measure('programs-wait', 'mesh-uploaded', 'programs-linked');
   measure('wasm-download-and-compile', 'wasm-fetch-start', 'wasm-compiled');
   measure('wasm-instantiate', 'wasm-compiled', 'wasm-instantiated');

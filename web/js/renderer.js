@@ -97,36 +97,6 @@ export class Renderer {
     return this.fences.length < MAX_FRAMES_IN_FLIGHT;
   }
 
-  // Draws the scene once before the avatar exists, with a zero-area triangle through the avatar's
-  // program, vertex layout and state: SwiftShader (and some drivers) build each pipeline at its
-  // first draw, so this moves that work into the time the avatar downloads and parses instead of
-  // the first signing frame. Throws a program's compile or link error.
-  warmUp(camera) {
-    const gl = this.gl;
-    this.finishPrograms();
-    const vao = gl.createVertexArray();
-    gl.bindVertexArray(vao);
-    const buffers = [];
-    for (const location of [0, 1]) {
-      const buffer = gl.createBuffer();
-      gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
-      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(9), gl.STATIC_DRAW);
-      gl.enableVertexAttribArray(location);
-      gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
-      buffers.push(buffer);
-    }
-    const indices = gl.createBuffer();
-    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
-    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array([0, 1, 2]), gl.STATIC_DRAW);
-    gl.bindVertexArray(null);
-    const primitives = [{ first_index: 0, index_count: 3, look: lookOf(null) }];
-    this.mesh = { vao, positions: buffers[0], normals: buffers[1], indices, vertexCount: 3, primitives, warmUp: true };
-    this.draw(camera);
-    gl.deleteVertexArray(vao);
-    for (const b of [...buffers, indices]) gl.deleteBuffer(b);
-    this.mesh = null;
-  }
-
   // Static data, uploaded once per avatar: indices and materials; the vertex buffers are allocated
   // here and refilled every frame by upload().
   setMesh({ vertexCount, indices, primitives, materials }) {
