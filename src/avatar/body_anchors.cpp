@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "skeleton/humanoid_names.h"
@@ -54,32 +55,56 @@ class Surface {
       const std::size_t joint = mesh_.joints[v][static_cast<std::size_t>(best)];
       region_[t] = joint < joint_region.size() ? joint_region[joint] : kCore;
     }
+    // Runs of consecutive triangles (neighbours in the file, so close on the body) with their box
+    // and parts: a ray that misses a run's box skips its triangles. The page loads the avatar on
+    // its main thread, where testing every triangle for each of the ~200 anchor rays was the
+    // largest part of the start-up.
+    for (std::size_t first = 0; first < triangles; first += kChunkTriangles) {
+      Chunk chunk;
+      chunk.first = first;
+      chunk.end = std::min(triangles, first + kChunkTriangles);
+      chunk.lo = glm::vec3(std::numeric_limits<float>::max());
+      chunk.hi = glm::vec3(std::numeric_limits<float>::lowest());
+      for (std::size_t t = chunk.first; t < chunk.end; ++t) {
+        chunk.regions |= region_[t];
+        for (int k = 0; k < 3; ++k) {
+          const glm::vec3& p = mesh_.positions[mesh_.indices[3 * t + static_cast<std::size_t>(k)]];
+          chunk.lo = glm::min(chunk.lo, p);
+          chunk.hi = glm::max(chunk.hi, p);
+        }
+      }
+      chunks_.push_back(chunk);
+    }
   }
 
   // Nearest surface along the ray (Möller–Trumbore, both faces) among triangles of `regions`.
+  // The same triangles are tested in the same order as without the runs, so the answer is the
+  // same to the bit: a run is skipped only when no triangle in it can be hit.
   std::optional<Hit> cast(glm::vec3 origin, glm::vec3 dir, unsigned regions) const {
     float best = 1e30f;
     std::size_t best_t = 0;
     bool found = false;
-    const std::size_t triangles = region_.size();
-    for (std::size_t t = 0; t < triangles; ++t) {
-      if (!(region_[t] & regions)) continue;
-      const glm::vec3& a = mesh_.positions[mesh_.indices[3 * t]];
-      const glm::vec3& b = mesh_.positions[mesh_.indices[3 * t + 1]];
-      const glm::vec3& c = mesh_.positions[mesh_.indices[3 * t + 2]];
-      const glm::vec3 e1 = b - a, e2 = c - a;
-      const glm::vec3 p = glm::cross(dir, e2);
-      const float det = glm::dot(e1, p);
-      if (std::abs(det) < 1e-12f) continue;
-      const float inv = 1.0f / det;
-      const glm::vec3 s = origin - a;
-      const float u = glm::dot(s, p) * inv;
-      if (u < 0.0f || u > 1.0f) continue;
-      const glm::vec3 q = glm::cross(s, e1);
-      const float v = glm::dot(dir, q) * inv;
-      if (v < 0.0f || u + v > 1.0f) continue;
-      const float dist = glm::dot(e2, q) * inv;
-      if (dist > 1e-5f && dist < best) { best = dist; best_t = t; found = true; }
+    for (const Chunk& chunk : chunks_) {
+      if (!(chunk.regions & regions) || !chunk.may_hit(origin, dir, best)) continue;
+      for (std::size_t t = chunk.first; t < chunk.end; ++t) {
+        if (!(region_[t] & regions)) continue;
+        const glm::vec3& a = mesh_.positions[mesh_.indices[3 * t]];
+        const glm::vec3& b = mesh_.positions[mesh_.indices[3 * t + 1]];
+        const glm::vec3& c = mesh_.positions[mesh_.indices[3 * t + 2]];
+        const glm::vec3 e1 = b - a, e2 = c - a;
+        const glm::vec3 p = glm::cross(dir, e2);
+        const float det = glm::dot(e1, p);
+        if (std::abs(det) < 1e-12f) continue;
+        const float inv = 1.0f / det;
+        const glm::vec3 s = origin - a;
+        const float u = glm::dot(s, p) * inv;
+        if (u < 0.0f || u > 1.0f) continue;
+        const glm::vec3 q = glm::cross(s, e1);
+        const float v = glm::dot(dir, q) * inv;
+        if (v < 0.0f || u + v > 1.0f) continue;
+        const float dist = glm::dot(e2, q) * inv;
+        if (dist > 1e-5f && dist < best) { best = dist; best_t = t; found = true; }
+      }
     }
     if (!found) return std::nullopt;
     const glm::vec3& a = mesh_.positions[mesh_.indices[3 * best_t]];
@@ -93,8 +118,41 @@ class Surface {
   }
 
  private:
+  // 64 triangles a run: small enough that a run's box hugs one part of the body, large enough
+  // that the boxes (a few hundred) cost little next to the triangles they skip.
+  static constexpr std::size_t kChunkTriangles = 64;
+  // Box margin in metres: far above the rounding of the triangle test (~1e-6 m on a body-sized
+  // mesh), so the box test never rejects a triangle the exact test would hit.
+  static constexpr float kMargin_m = 1e-3f;
+
+  struct Chunk {
+    std::size_t first = 0, end = 0;
+    unsigned regions = 0;
+    glm::vec3 lo{0.0f}, hi{0.0f};
+
+    // Slab test of the ray against the box grown by kMargin_m, up to the nearest hit so far.
+    bool may_hit(glm::vec3 origin, glm::vec3 dir, float max_distance) const {
+      float t0 = 0.0f, t1 = max_distance + kMargin_m;
+      for (int k = 0; k < 3; ++k) {
+        const float lo_k = lo[k] - kMargin_m, hi_k = hi[k] + kMargin_m;
+        if (std::abs(dir[k]) < 1e-12f) {
+          if (origin[k] < lo_k || origin[k] > hi_k) return false;
+          continue;
+        }
+        const float inv = 1.0f / dir[k];
+        float near = (lo_k - origin[k]) * inv, far = (hi_k - origin[k]) * inv;
+        if (near > far) std::swap(near, far);
+        t0 = std::max(t0, near);
+        t1 = std::min(t1, far);
+        if (t0 > t1) return false;
+      }
+      return true;
+    }
+  };
+
   const SkinnedMesh& mesh_;
   std::vector<unsigned> region_;
+  std::vector<Chunk> chunks_;
 };
 
 class AnchorBuilder {

@@ -474,6 +474,7 @@ struct Loader {
   std::vector<int> skin_to_joint;      // skin.joints[i] -> skeleton index
   int skin_index = -1;
   std::map<std::string, std::size_t> morph_by_name;
+  std::size_t reserve_vertices = 0;    // expected_vertices(), once read_meshes starts
 
   bool run() {
     if (model.nodes.empty()) return ctx.fail("nodes", "the file has no nodes");
@@ -640,6 +641,12 @@ struct Loader {
   }
 
   bool read_meshes() {
+    reserve_vertices = expected_vertices();
+    auto& m = avatar.mesh;
+    m.positions.reserve(reserve_vertices);
+    m.normals.reserve(reserve_vertices);
+    m.joints.reserve(reserve_vertices);
+    m.weights.reserve(reserve_vertices);
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
       const tinygltf::Node& node = model.nodes[i];
       if (node.mesh < 0) continue;
@@ -663,6 +670,33 @@ struct Loader {
       if (!t.normal_deltas.empty()) t.normal_deltas.resize(n, glm::vec3(0.0f));
     }
     return true;
+  }
+
+  // The merged vertex count the skinned primitives declare, to size the arrays once: growing every
+  // morph target's deltas primitive by primitive re-copied them at each step, which was the
+  // largest cost of loading the avatar in the page. Only a hint (accessors are checked when read),
+  // so it is capped by the vertex limit, and 0 when the declared counts make no sense.
+  std::size_t expected_vertices() const {
+    std::size_t total = 0;
+    for (const tinygltf::Node& node : model.nodes) {
+      if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= model.meshes.size() || node.skin != skin_index) continue;
+      for (const tinygltf::Primitive& prim : model.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
+        const auto pos = prim.attributes.find("POSITION");
+        if (pos == prim.attributes.end() || pos->second < 0 || static_cast<std::size_t>(pos->second) >= model.accessors.size())
+          continue;
+        total += model.accessors[static_cast<std::size_t>(pos->second)].count;
+        if (total > ctx.limits.max_vertices) return 0;
+      }
+    }
+    return total;
+  }
+
+  // Room for a morph target's full deltas, if the delta budget allows that many targets at the
+  // expected size (otherwise the budget check in read_primitive reports the problem).
+  void reserve_deltas(std::vector<glm::vec3>& deltas) const {
+    if (deltas.capacity() >= reserve_vertices) return;
+    if (reserve_vertices * 6 * avatar.morphs.size() > ctx.limits.max_morph_floats) return;
+    deltas.reserve(reserve_vertices);
   }
 
   bool read_vec3s(int accessor, const std::string& what, std::size_t count, std::vector<glm::vec3>& out,
@@ -818,6 +852,7 @@ struct Loader {
         if (!read_vec3s(pos->second, twhere + " POSITION", count, deltas,
                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT}))
           return false;
+        reserve_deltas(out.position_deltas);
         out.position_deltas.resize(base, glm::vec3(0.0f));
         out.position_deltas.insert(out.position_deltas.end(), deltas.begin(), deltas.end());
       }
@@ -826,6 +861,7 @@ struct Loader {
         if (!read_vec3s(nrm->second, twhere + " NORMAL", count, deltas,
                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT}))
           return false;
+        reserve_deltas(out.normal_deltas);
         out.normal_deltas.resize(base, glm::vec3(0.0f));
         out.normal_deltas.insert(out.normal_deltas.end(), deltas.begin(), deltas.end());
       }

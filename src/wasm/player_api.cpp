@@ -140,9 +140,18 @@ bool read_format(const std::string& name, const std::string& text, sw::notation:
 
 class Player {
  public:
-  std::string loadAvatar(const std::string& bytes) {
-    sw::synthesis::SigningAvatar loaded = sw::synthesis::load_signing_avatar(
-        reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+  // Takes the bytes as a JS value, not std::string: embind fills a std::string from a Uint8Array
+  // one byte at a time in JS (~50-80 ms for the 1.7 MB avatar on the page's main thread), while
+  // TypedArray.set copies them into WASM memory at once. An ArrayBuffer is viewed as bytes; anything
+  // else arrives empty, which the loader rejects with its message.
+  std::string loadAvatar(const emscripten::val& bytes) {
+    const emscripten::val u8 = emscripten::val::global("Uint8Array");
+    const emscripten::val view = bytes.instanceof(u8) ? bytes
+                                 : bytes.instanceof(emscripten::val::global("ArrayBuffer")) ? u8.new_(bytes)
+                                                                                             : u8.new_(0);
+    std::vector<std::uint8_t> data(view["length"].as<std::size_t>());
+    emscripten::val(emscripten::typed_memory_view(data.size(), data.data())).call<void>("set", view);
+    sw::synthesis::SigningAvatar loaded = sw::synthesis::load_signing_avatar(data.data(), data.size());
     if (!loaded.ok()) return loaded.error;
     // Release in dependency order: the instance and synthesizer point into the avatar.
     instance_.reset();

@@ -91,6 +91,24 @@ for (const flavour of FLAVOURS) {
       core.avatarFree(good.id);
     });
 
+    // Player.loadAvatar copies the bytes in with one TypedArray.set (the page's start-up): it must
+    // take what the page and tools hand it, and answer anything else with the loader's message.
+    test('the player takes the avatar as a Uint8Array or an ArrayBuffer; other values get a message', () => {
+      const file = path.join(ROOT, 'models', 'signweave-avatar.glb');
+      const bytes = readFileSync(file);
+      const fromView = new core.Player();
+      assert.equal(fromView.loadAvatar(new Uint8Array(bytes)), '');
+      const fromBuffer = new core.Player();
+      assert.equal(fromBuffer.loadAvatar(bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.length)), '');
+      assert.deepEqual(Array.from(fromBuffer.positions()), Array.from(fromView.positions()), 'same avatar either way');
+      assert.ok(JSON.parse(fromView.avatarInfoJson()).vertex_count > 1000);
+      for (const bad of ['a string', null, 42, new Uint8Array([1, 2, 3])]) {
+        const message = new core.Player().loadAvatar(bad);
+        assert.ok(typeof message === 'string' && message.length > 0, `loadAvatar(${String(bad)}) answers ${message}`);
+      }
+      assert.equal(new core.Player().loadAvatar(new Uint8Array(bytes)), '', 'the module still works');
+    });
+
     test('an unknown id gives null, empty views and false — no abort', () => {
       assert.equal(core.avatarInfo(9999), null);
       assert.equal(core.avatarSkinnedPositions(9999).length, 0);

@@ -16,6 +16,9 @@ import { transformPoint } from './mat4.js';
 import { Playback } from './playback.js';
 import { Renderer, WebGL2Unavailable } from './renderer.js';
 import { SigningCore } from './signing_core.js';
+import { mark, markTime, measure, startupBreakdown } from './startup_metrics.js';
+
+mark('app-start');
 
 const AVATAR_URL = 'models/signweave-avatar.glb';
 const $ = (id) => document.getElementById(id);
@@ -24,7 +27,13 @@ const metrics = {
   firstSigningFrame_ms: null,   // performance.now() of the first frame drawn while a clip plays
   frameWork_ms: 0,              // last frame's pose + skinning + upload on the main thread
   frameWorkSamples: [],         // the last 240 of them (bench/web_bench.mjs reads percentiles)
+  frameUpdateSamples: [],       // the same frames' core.update alone (sample + FK + skinning in WASM)
+  frameUploadSamples: [],       // and their bufferSubData uploads alone
   frames: 0,
+  framesSkipped: 0,             // frames not drawn because the GPU was still busy with earlier ones
+  // The start-up timeline (startup_metrics.js): marks in ms since navigation, measured spans, and
+  // the Resource Timing waterfall of the page's files.
+  get startup() { return startupBreakdown(); },
 };
 const api = new ApiClient();
 const camera = new OrbitCamera();
@@ -51,6 +60,7 @@ const state = {
 };
 let renderer = null;
 let core = null;
+let signerReady = false;        // core, avatar and shader programs in: frames can pose and draw
 let source = null;              // what the clip was made from, to re-synthesise (left-handed, face)
 let clipLabel = 'signweave';
 let debugVisible = false;
@@ -123,26 +133,60 @@ async function fetchWithProgress(url, onFraction) {
   return bytes;
 }
 
-async function boot() {
-  // The dictionary needs no 3D view: languages load whatever happens to WebGL2 or the core.
-  const languagesPromise = loadLanguages();
-  try {
-    renderer = new Renderer($('view'));
-  } catch (err) {
-    const message = err instanceof WebGL2Unavailable
-      ? 'This browser cannot draw the avatar: WebGL2 is missing or disabled. Try a current Firefox, Chrome, Edge or Safari, or enable hardware acceleration.'
-      : `The 3D view could not start: ${err.message}`;
-    fail(message);
-    return;
+// The sign a #/sign/ID link opens, requested at start-up beside the core and the avatar rather than
+// after them; the dictionary takes it once (a later visit to the same sign asks the server again,
+// so an edit saved meanwhile shows).
+let prefetchedSign = null;
+function routedSignId() {
+  const path = location.hash.replace(/^#/, '').split('?')[0];
+  return path.startsWith('/sign/') ? decodeURIComponent(path.slice('/sign/'.length)) : null;
+}
+
+function prefetchRoutedSign() {
+  const id = routedSignId();
+  if (id === null) return;
+  mark('sign-requested');
+  const promise = api.sign(id);
+  promise.then(() => mark('sign-arrived'), () => {});   // the dictionary reports a failure when it takes the answer
+  prefetchedSign = { id, promise };
+}
+
+function loadSign(id) {
+  if (prefetchedSign && prefetchedSign.id === id) {
+    const { promise } = prefetchedSign;
+    prefetchedSign = null;
+    return promise;
   }
+  mark('sign-requested');
+  return api.sign(id).then((answer) => { mark('sign-arrived'); return answer; });
+}
+
+async function boot() {
+  // Everything the first signing frame needs is requested before anything waits: the core (its
+  // .wasm compiles while it streams in), the avatar, the routed sign and the languages. The
+  // renderer's shader programs then build in the GPU process while those downloads run.
   let coreFraction = 0, avatarFraction = 0;
   const progress = () => setProgress(0.5 * coreFraction + 0.5 * avatarFraction, 'Loading the signer…');
+  const corePromise = SigningCore.create({ onProgress: (f) => { coreFraction = f; progress(); } });
+  const avatarPromise = fetchWithProgress(AVATAR_URL, (f) => { avatarFraction = f; progress(); })
+    .then((bytes) => { mark('avatar-fetched'); return bytes; });
+  prefetchRoutedSign();
+  // The dictionary needs no 3D view: languages load whatever happens to WebGL2 or the core.
+  const languagesPromise = loadLanguages();
+  // A failure while the renderer is checked must not leave these to reject unheard.
+  corePromise.catch(() => {});
+  avatarPromise.catch(() => {});
+  try {
+    mark('renderer-start');
+    renderer = new Renderer($('view'));
+    mark('renderer-created');
+  } catch (err) {
+    fail(rendererFailure(err));
+    return;
+  }
   let avatarBytes;
   try {
-    [core, avatarBytes] = await Promise.all([
-      SigningCore.create({ onProgress: (f) => { coreFraction = f; progress(); } }),
-      fetchWithProgress(AVATAR_URL, (f) => { avatarFraction = f; progress(); }),
-    ]);
+    [core, avatarBytes] = await Promise.all([corePromise, avatarPromise]);
   } catch (err) {
     fail(err instanceof TypeError && /fetch/i.test(err.message)
       ? 'The Signweave server cannot be reached, so the signer cannot load. Is it running?'
@@ -150,18 +194,45 @@ async function boot() {
     return;
   }
   state.flavour = core.flavour;
+  mark('avatar-parse-start');
   const avatarError = core.loadAvatar(avatarBytes);
   if (avatarError) { fail(`The avatar could not be loaded: ${avatarError}`); return; }
+  mark('avatar-parsed');
   const info = core.info;
   renderer.setMesh({ vertexCount: info.vertex_count, indices: core.indices(), primitives: info.primitives, materials: info.materials });
+  mark('mesh-uploaded');
+  try {
+    renderer.finishPrograms();   // built meanwhile; a compile error is reported here, not mid-frame
+  } catch (err) {
+    fail(rendererFailure(err));
+    return;
+  }
+  mark('programs-linked');
   renderer.bodyHeight_m = info.height_m || 1.7;
   camera.fitTo(info.height_m);
   setupFace(info);
-  await languagesPromise;
   setProgress(1);
   $('loading').hidden = true;
+  signerReady = true;
+  mark('signer-ready');
+  // A #/sign/ID link plays as soon as the signer can: it needs no language list. Other routes (a
+  // phrase or a search depends on the language) wait for it below.
+  const early = location.hash;
+  const earlySign = routedSignId();
+  if (earlySign !== null) {
+    showPane('dictionary');
+    dictionary.open(earlySign);
+  }
+  await languagesPromise;
   state.ready = true;
-  route();
+  mark('ready');
+  if (earlySign === null || location.hash !== early) route();
+}
+
+function rendererFailure(err) {
+  return err instanceof WebGL2Unavailable
+    ? 'This browser cannot draw the avatar: WebGL2 is missing or disabled. Try a current Firefox, Chrome, Edge or Safari, or enable hardware acceleration.'
+    : `The 3D view could not start: ${err.message}`;
 }
 
 function fail(message) {
@@ -198,9 +269,8 @@ $('language').addEventListener('change', () => {
 
 // -------------------------------------------------------------------------------- the clip
 function synthesisOptions() {
-  const face = $('face-controls');
   const options = { left_handed: $('left-handed').checked };
-  if (!face.hidden) {
+  if (faceEnabled) {
     options.emotion = $('emotion').value;
     options.intensity = Number($('intensity').value);
     options.mouthing = $('mouthing').checked;
@@ -266,11 +336,13 @@ const dictionary = new Dictionary({
   gloss: $('sign-gloss'), languageLabel: $('sign-language'), share: $('sign-share'),
   keywords: $('sign-keywords'), format: $('sign-format'), notation: $('sign-notation'),
 }, {
-  api, language,
+  api, language, loadSign,
   symbolNames: (text, format) => (core && (format === 'hamnosys' || format === 'hsigml') ? core.hamnosysNames(text) : []),
   onOpen: (sign) => {
+    mark('sign-fetched');
     phrase.clearCaption();
     const result = playNotation(sign.notation, sign.format, sign.gloss, { loop: true });
+    mark('sign-synthesised');
     if (!result.ok) dictionary.setStatus(`This sign cannot be played: ${describeFailure(result)}`, true);
   },
 });
@@ -371,13 +443,18 @@ $('debug-toggle').addEventListener('click', (e) => {
   poseDirty = true;
 });
 
+let faceEnabled = false;
 function setupFace(info) {
   const face = info.face;
   const controls = $('face-controls');
   if (!face || !Array.isArray(face.emotions) || !face.emotions.length) { controls.hidden = true; return; }
   $('emotion').replaceChildren(...face.emotions.map((e) => new Option(e, e)));
   controls.hidden = false;
-  for (const id of ['emotion', 'intensity', 'mouthing']) $(id).addEventListener('change', resynthesise);
+  faceEnabled = true;
+  for (const id of ['emotion', 'intensity', 'mouthing']) {
+    $(id).disabled = false;
+    $(id).addEventListener('change', resynthesise);
+  }
 }
 
 // ------------------------------------------------------------------------------------ export
@@ -419,33 +496,64 @@ $('export-webm').addEventListener('click', async (e) => {
 
 // --------------------------------------------------------------------------------- the frame loop
 let last = performance.now();
+let idleDrawn = false;
 function frame(now) {
   const dt = (now - last) / 1000;
   last = now;
   if (playback.tick(dt)) poseDirty = true;
   camera.update(dt);
-  if (core && state.ready) {
+  if (signerReady && !renderer.gpuCaughtUp()) {
+    // The GPU is behind: neither pose nor draw this time (see Renderer.gpuCaughtUp).
+    metrics.framesSkipped++;
+  } else if (signerReady) {
     if (poseDirty) {
       const start = performance.now();
       const views = core.update(playback.time_s);
+      const updated = performance.now();
       renderer.upload(views.positions, views.normals);
-      metrics.frameWork_ms = performance.now() - start;
-      metrics.frameWorkSamples.push(metrics.frameWork_ms);
-      if (metrics.frameWorkSamples.length > 240) metrics.frameWorkSamples.shift();
+      const end = performance.now();
+      metrics.frameWork_ms = end - start;
+      pushSample(metrics.frameWorkSamples, metrics.frameWork_ms);
+      pushSample(metrics.frameUpdateSamples, updated - start);
+      pushSample(metrics.frameUploadSamples, end - updated);
       if (debugVisible) renderer.setDebugGeometry(views.jointPositions, core.info.parents, views.anchorPositions);
       updateFraming(views.jointPositions, views.anchorPositions);
       poseDirty = false;
     }
     renderer.draw(camera, { showDebug: debugVisible });
     metrics.frames++;
+    if (markTime('first-avatar-frame') === null) mark('first-avatar-frame');
     if (metrics.firstSigningFrame_ms === null && playback.playing && playback.time_s > 0) {
-      metrics.firstSigningFrame_ms = performance.now();
+      metrics.firstSigningFrame_ms = mark('first-signing-frame');
+      measureStartup();
     }
-  } else if (renderer) {
+  } else if (renderer && !state.error && renderer.programsReady() && !idleDrawn) {
+    // While loading, the background is drawn once (it does not change): redrawing it every frame
+    // would take the CPU that SwiftShader or a weak GPU shares with the downloads and compiles.
     renderer.draw(camera);
+    idleDrawn = true;
   }
   publishState();
   requestAnimationFrame(frame);
+}
+
+function pushSample(samples, value) {
+  samples.push(value);
+  if (samples.length > 240) samples.shift();
+}
+
+// The spans of the start-up worth reading at a glance (the marks themselves hold the rest).
+function measureStartup() {
+  measure('renderer-create', 'renderer-start', 'renderer-created');
+  measure('programs-wait', 'mesh-uploaded', 'programs-linked');
+  measure('wasm-download-and-compile', 'wasm-fetch-start', 'wasm-compiled');
+  measure('wasm-instantiate', 'wasm-compiled', 'wasm-instantiated');
+  measure('avatar-parse', 'avatar-parse-start', 'avatar-parsed');
+  measure('mesh-upload', 'avatar-parsed', 'mesh-uploaded');
+  measure('sign-fetch', 'sign-requested', 'sign-arrived');
+  measure('sign-wait-for-signer', 'sign-arrived', 'sign-fetched');
+  measure('synthesis', 'sign-fetched', 'sign-synthesised');
+  measure('to-first-signing-frame', 'sign-synthesised', 'first-signing-frame');
 }
 
 // The hands close-up frames neutral signing space (the body anchor space/centre, where most signs

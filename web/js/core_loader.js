@@ -11,10 +11,13 @@
 //
 // The generated .js is a classic script defining the global factory createSignweave (Emscripten
 // MODULARIZE), so it is added with a <script> tag (importScripts in a worker). The .wasm is fetched
-// here rather than by Emscripten so that its download can be reported to onProgress.
+// and compiled here (streaming, while the script loads) rather than by Emscripten, so that the two
+// downloads overlap and the download can be reported to onProgress.
 //
 // Does not: cache across page loads (the HTTP cache does), or load both flavours at once (they
 // define the same global).
+
+import { mark } from './startup_metrics.js';
 
 // (module (func (result v128) i32.const 0 i32x4.splat)) — valid only where SIMD is supported.
 const SIMD_PROBE = new Uint8Array([
@@ -54,49 +57,78 @@ export function loadClassicScript(url) {
   });
 }
 
-// Downloads the .wasm, reporting the fraction received (0..1) when the server sends its length.
-// A compressed response (Content-Encoding: gzip, which the Signweave server sends) has the
-// COMPRESSED size in Content-Length while the stream yields decompressed bytes, so its length
-// cannot measure progress: the chunks are collected and progress is reported at the end.
-async function fetchWasm(url, onProgress) {
+// Downloads and compiles the .wasm in one go: WebAssembly.compileStreaming compiles while the bytes
+// arrive (the server sends application/wasm, which streaming requires), instead of waiting for the
+// whole file and then compiling it. Progress: a response with a plain Content-Length is counted as
+// it streams through; a compressed one (Content-Encoding: gzip, which the Signweave server sends)
+// has the COMPRESSED size in Content-Length while the stream yields decompressed bytes, so its
+// length cannot measure progress and only the end is reported. Without streaming support or with
+// another MIME type, the bytes are collected and compiled at the end.
+async function fetchAndCompileWasm(url, onProgress) {
   const response = await fetch(url);
   if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+  mark('wasm-response');
   const encoded = (response.headers.get('content-encoding') || 'identity') !== 'identity';
   const total = encoded ? 0 : Number(response.headers.get('content-length')) || 0;
-  if (!response.body || !total) {
-    const bytes = new Uint8Array(await response.arrayBuffer());
-    onProgress(1);
-    return bytes;
+  const streamable = typeof WebAssembly.compileStreaming === 'function' &&
+    (response.headers.get('content-type') || '').split(';')[0].trim() === 'application/wasm';
+  let body = response;
+  if (total && response.body) {
+    let received = 0;
+    const counted = response.body.pipeThrough(new TransformStream({
+      transform(chunk, controller) {
+        received += chunk.length;
+        if (received > total) throw new Error(`${url}: more bytes than its content-length`);
+        onProgress(received / total);
+        controller.enqueue(chunk);
+      },
+      flush() {
+        if (received !== total) throw new Error(`${url}: ${received} of ${total} bytes received`);
+      },
+    }));
+    body = new Response(counted, { headers: { 'content-type': 'application/wasm' } });
   }
-  const bytes = new Uint8Array(total);
-  const reader = response.body.getReader();
-  let received = 0;
-  for (;;) {
-    const { done, value } = await reader.read();
-    if (done) break;
-    if (received + value.length > total) throw new Error(`${url}: more bytes than its content-length`);
-    bytes.set(value, received);
-    received += value.length;
-    onProgress(received / total);
-  }
-  if (received !== total) throw new Error(`${url}: ${received} of ${total} bytes received`);
-  return bytes;
+  const compiled = streamable
+    ? await WebAssembly.compileStreaming(body)
+    : await WebAssembly.compile(await body.arrayBuffer());
+  onProgress(1);
+  return compiled;
 }
 
 async function instantiate(flavour, baseUrl, loadScript, moduleArgs, onProgress) {
   const jsUrl = new URL(`signweave-${flavour}.js`, baseUrl).href;
   const extra = typeof moduleArgs === 'function' ? moduleArgs(flavour) : moduleArgs;
-  const wasmBinary = extra.wasmBinary ?? (await fetchWasm(new URL(`signweave-${flavour}.wasm`, baseUrl).href, onProgress));
-  delete globalThis.createSignweave;
+  // The .wasm (download + compile) and the glue script load side by side: neither needs the other
+  // until the module is instantiated.
+  mark('wasm-fetch-start');
+  const compiling = extra.wasmBinary ? null : fetchAndCompileWasm(new URL(`signweave-${flavour}.wasm`, baseUrl).href, onProgress);
+  compiling?.catch(() => {});  // a failure is reported by the await below, not as unhandled
+  // Cleared rather than deleted: the glue declares it with `var`, which makes it a global that
+  // cannot be deleted (a SIMD glue loaded before its .wasm failed would make delete throw).
+  globalThis.createSignweave = undefined;
   await loadScript(jsUrl);
+  mark('wasm-script-loaded');
   const factory = globalThis.createSignweave;
   if (typeof factory !== 'function') throw new Error(`${jsUrl} did not define createSignweave`);
-  const module = await factory({
+  const compiled = compiling && (await compiling);
+  if (compiled) mark('wasm-compiled');
+  let instantiateFailed;
+  const failure = new Promise((_, reject) => { instantiateFailed = reject; });
+  const args = {
     // Anything else the module looks up sits beside its .js: resolve against baseUrl, not the page.
     locateFile: (file) => new URL(file, baseUrl).href,
     ...extra,
-    wasmBinary,
-  });
+  };
+  if (compiled) {
+    // Emscripten's hook for a module compiled elsewhere: instantiate it with the glue's imports and
+    // hand the instance back (an empty object tells the glue the exports come asynchronously).
+    args.instantiateWasm = (imports, receive) => {
+      WebAssembly.instantiate(compiled, imports).then((instance) => receive(instance, compiled), instantiateFailed);
+      return {};
+    };
+  }
+  const module = await Promise.race([factory(args), failure]);
+  mark('wasm-instantiated');
   onProgress(1);
   return { module, flavour };
 }

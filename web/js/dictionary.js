@@ -19,12 +19,13 @@ export function normalizeSign(raw) {
 }
 
 export class Dictionary {
-  constructor(elements, { api, language, onOpen, symbolNames = () => [] }) {
+  constructor(elements, { api, language, onOpen, symbolNames = () => [], loadSign = (id) => api.sign(id) }) {
     this.el = elements;         // { input, status, results, page, gloss, languageLabel, share, keywords, format, notation, edit }
     this.api = api;
     this.language = language;   // () -> current language code
     this.onOpen = onOpen;       // (sign) -> void: play it
     this.symbolNames = symbolNames;  // (text, format) -> HamNoSys symbol names, for glyph notations
+    this.loadSign = loadSign;   // id -> Promise<{ sign }> (the app hands over a sign it prefetched)
     this.timer = 0;
     this.inflight = null;
     this.current = null;
@@ -95,7 +96,7 @@ export class Dictionary {
 
   async open(id) {
     try {
-      const { sign } = await this.api.sign(id);
+      const { sign } = await this.loadSign(id);
       const s = normalizeSign(sign);
       this.current = s;
       this.showPage(s);

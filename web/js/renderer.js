@@ -10,12 +10,25 @@
 import * as S from './shaders.js';
 
 const MAX_PIXEL_RATIO = 2;
+// Frames the GPU may be behind before the page stops sending new ones. Past that, uploading the
+// next pose makes the main thread wait for the GPU process (bufferSubData and the command-buffer
+// flush block once their buffers are full): on SwiftShader under load that wait was the whole
+// tail of the per-frame time. Two, not one: a fence's status reaches the page a task after the
+// GPU signals it, so with one a fast GPU would lose every other frame.
+const MAX_FRAMES_IN_FLIGHT = 2;
 
 export class WebGL2Unavailable extends Error {}
 
 export class Renderer {
   constructor(canvas) {
     this.canvas = canvas;
+    // The drawing buffer is sized before the context exists: a context made at the canvas's
+    // default 300×150 and resized at the first draw allocates its (multisampled) framebuffer twice,
+    // and the resize makes the main thread wait for the GPU process (slow on SwiftShader).
+    this.pixelRatio = 1;
+    this.resize();
+    // index.html may have made this context already (to start it early), with these attributes:
+    // keep the two lists the same.
     const gl = canvas.getContext('webgl2', {
       antialias: true,                 // MSAA on the default framebuffer
       alpha: false,
@@ -26,10 +39,15 @@ export class Renderer {
     });
     if (!gl) throw new WebGL2Unavailable('WebGL2 is not available in this browser');
     this.gl = gl;
-    this.background = program(gl, S.BACKGROUND_VS, S.BACKGROUND_FS);
-    this.floor = program(gl, S.FLOOR_VS, S.FLOOR_FS);
-    this.avatar = program(gl, S.AVATAR_VS, S.AVATAR_FS);
-    this.debug = program(gl, S.DEBUG_VS, S.DEBUG_FS);
+    // Compile and link are only requested here: asking for a status would make the main thread wait
+    // for the GPU process to finish them (SwiftShader compiles on the CPU, slowly). The programs
+    // build while the core and the avatar download; each is checked when first drawn, or earlier
+    // through programsReady() where KHR_parallel_shader_compile tells without waiting.
+    this.parallelCompile = gl.getExtension('KHR_parallel_shader_compile');
+    this.background = startProgram(gl, S.BACKGROUND_VS, S.BACKGROUND_FS);
+    this.floor = startProgram(gl, S.FLOOR_VS, S.FLOOR_FS);
+    this.avatar = startProgram(gl, S.AVATAR_VS, S.AVATAR_FS);
+    this.debug = startProgram(gl, S.DEBUG_VS, S.DEBUG_FS);
     this.emptyVao = gl.createVertexArray();
     this.floorVao = gl.createVertexArray();
     gl.bindVertexArray(this.floorVao);
@@ -48,7 +66,35 @@ export class Renderer {
     this.mesh = null;
     this.shadowCentre = [0, 0];
     this.bodyHeight_m = 1.7;
-    this.pixelRatio = 1;
+    this.fences = [];   // one per drawn frame not yet finished by the GPU, oldest first
+    // Send the queued compiles to the GPU process now, so they build while the page downloads
+    // (otherwise they wait in the command buffer until the next flush).
+    gl.flush();
+  }
+
+  // True when every program has linked. Where KHR_parallel_shader_compile exists this asks without
+  // waiting; elsewhere it is false until finishPrograms() has run (so nothing waits by accident).
+  programsReady() {
+    const all = [this.background, this.floor, this.avatar, this.debug];
+    if (all.every((p) => p.u)) return true;
+    const done = this.parallelCompile?.COMPLETION_STATUS_KHR;
+    return !!done && all.every((p) => p.u || this.gl.getProgramParameter(p.program, done));
+  }
+
+  // Waits for every program (if still building) and checks it: throws the compile or link error.
+  finishPrograms() {
+    for (const p of [this.background, this.floor, this.avatar, this.debug]) finishProgram(this.gl, p);
+  }
+
+  // False while the GPU is still working through MAX_FRAMES_IN_FLIGHT earlier frames: then the
+  // caller skips this frame (the clock runs on; the next drawn frame shows the pose of its time).
+  // Asking a fence's status never waits.
+  gpuCaughtUp() {
+    const gl = this.gl;
+    while (this.fences.length && gl.getSyncParameter(this.fences[0], gl.SYNC_STATUS) === gl.SIGNALED) {
+      gl.deleteSync(this.fences.shift());
+    }
+    return this.fences.length < MAX_FRAMES_IN_FLIGHT;
   }
 
   // Static data, uploaded once per avatar: indices and materials; the vertex buffers are allocated
@@ -131,6 +177,7 @@ export class Renderer {
     // Background: no depth.
     gl.disable(gl.DEPTH_TEST);
     gl.depthMask(false);
+    finishProgram(gl, this.background);
     gl.useProgram(this.background.program);
     gl.uniform3f(this.background.u.uTop, 0.93, 0.945, 0.965);
     gl.uniform3f(this.background.u.uBottom, 0.74, 0.78, 0.83);
@@ -140,6 +187,7 @@ export class Renderer {
     // Floor with the blob shadow, blended, depth-tested against nothing yet but written for order.
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+    finishProgram(gl, this.floor);
     gl.useProgram(this.floor.program);
     gl.uniformMatrix4fv(this.floor.u.uViewProj, false, camera.viewProjection);
     gl.uniform1f(this.floor.u.uRadius, 1.6 * this.bodyHeight_m);
@@ -156,11 +204,13 @@ export class Renderer {
     if (this.mesh) this.drawAvatar(camera);
     if (showDebug) this.drawDebug(camera);
     gl.bindVertexArray(null);
+    const fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    if (fence) this.fences.push(fence);
   }
 
   drawAvatar(camera) {
     const gl = this.gl;
-    const { u } = this.avatar;
+    const { u } = finishProgram(gl, this.avatar);
     gl.useProgram(this.avatar.program);
     gl.uniformMatrix4fv(u.uViewProj, false, camera.viewProjection);
     gl.uniform3fv(u.uEye, camera.eye);
@@ -190,7 +240,7 @@ export class Renderer {
   drawDebug(camera) {
     const gl = this.gl;
     if (!this.debugLines) return;
-    const { u } = this.debug;
+    const { u } = finishProgram(gl, this.debug);
     gl.disable(gl.DEPTH_TEST);   // the skeleton is inside the body: draw it on top
     gl.useProgram(this.debug.program);
     gl.uniformMatrix4fv(u.uViewProj, false, camera.viewProjection);
@@ -226,26 +276,42 @@ function lookOf(material) {
   };
 }
 
-function program(gl, vsSource, fsSource) {
-  const compile = (type, source) => {
-    const shader = gl.createShader(type);
-    gl.shaderSource(shader, source);
-    gl.compileShader(shader);
-    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-      throw new Error(`shader compile failed: ${gl.getShaderInfoLog(shader)}`);
-    }
-    return shader;
+// Queues a program's compile and link without waiting for either (see the constructor).
+function startProgram(gl, vsSource, fsSource) {
+  const shader = (type, source) => {
+    const sh = gl.createShader(type);
+    gl.shaderSource(sh, source);
+    gl.compileShader(sh);
+    return sh;
   };
+  const vs = shader(gl.VERTEX_SHADER, vsSource);
+  const fs = shader(gl.FRAGMENT_SHADER, fsSource);
   const p = gl.createProgram();
-  gl.attachShader(p, compile(gl.VERTEX_SHADER, vsSource));
-  gl.attachShader(p, compile(gl.FRAGMENT_SHADER, fsSource));
+  gl.attachShader(p, vs);
+  gl.attachShader(p, fs);
   gl.linkProgram(p);
-  if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(`program link failed: ${gl.getProgramInfoLog(p)}`);
+  return { program: p, vs, fs, u: null };
+}
+
+// Checks a started program once (the first status query waits for its link) and finds its
+// uniforms; later calls return at once. A failed compile names its stage and the driver's log.
+function finishProgram(gl, entry) {
+  if (entry.u) return entry;
+  const p = entry.program;
+  if (!gl.getProgramParameter(p, gl.LINK_STATUS)) {
+    for (const [sh, stage] of [[entry.vs, 'vertex'], [entry.fs, 'fragment']]) {
+      if (!gl.getShaderParameter(sh, gl.COMPILE_STATUS)) throw new Error(`${stage} shader compile failed: ${gl.getShaderInfoLog(sh)}`);
+    }
+    throw new Error(`program link failed: ${gl.getProgramInfoLog(p)}`);
+  }
   const u = {};
   const count = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS);
   for (let i = 0; i < count; i++) {
     const info = gl.getActiveUniform(p, i);
     u[info.name] = gl.getUniformLocation(p, info.name);
   }
-  return { program: p, u };
+  gl.deleteShader(entry.vs);   // linked: the program keeps what it needs
+  gl.deleteShader(entry.fs);
+  entry.u = u;
+  return entry;
 }

@@ -1,0 +1,70 @@
+// The page exposes its start-up timeline (web/js/startup_metrics.js) on window.signweave.metrics.startup
+// for bench/web_bench.mjs: every step from navigation to the first signing frame is marked, in an
+// order that makes sense, and the downloads the first frame needs start together rather than one
+// after another. No timing thresholds here: speed targets live in the bench.
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+
+import { launchBrowser, startServer } from './harness.mjs';
+
+let server, browser;
+before(async () => { server = await startServer(); browser = await launchBrowser(); });
+after(async () => { await browser?.close(); await server?.stop(); });
+
+const STEPS = ['app-start', 'wasm-fetch-start', 'wasm-script-loaded', 'wasm-instantiated', 'avatar-fetched',
+  'avatar-parsed', 'mesh-uploaded', 'programs-linked', 'signer-ready', 'ready', 'sign-requested', 'sign-arrived', 'sign-fetched',
+  'sign-synthesised', 'first-avatar-frame', 'first-signing-frame'];
+
+// Each pair: the first step happens no later than the second.
+const BEFORE = [
+  ['app-start', 'wasm-fetch-start'], ['wasm-fetch-start', 'wasm-instantiated'],
+  ['wasm-script-loaded', 'wasm-instantiated'], ['avatar-fetched', 'avatar-parsed'],
+  ['wasm-instantiated', 'avatar-parsed'], ['avatar-parsed', 'mesh-uploaded'], ['mesh-uploaded', 'programs-linked'],
+  ['programs-linked', 'signer-ready'], ['signer-ready', 'ready'], ['sign-requested', 'sign-arrived'], ['sign-arrived', 'sign-fetched'],
+  ['sign-fetched', 'sign-synthesised'], ['signer-ready', 'sign-synthesised'],
+  ['sign-synthesised', 'first-signing-frame'], ['signer-ready', 'first-avatar-frame'],
+  ['first-avatar-frame', 'first-signing-frame'],
+  // Started together: the routed sign is asked for while the core is still loading, not after it.
+  ['sign-requested', 'wasm-instantiated'], ['app-start', 'sign-requested'],
+];
+
+test('the start-up timeline is exposed, complete and ordered from navigation to the first signing frame', async () => {
+  const context = await browser.newContext({ viewport: { width: 1000, height: 700 } });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  try {
+    const list = await (await fetch(`${server.base}/api/signs?q=&limit=1`)).json();
+    const id = list.hits[0].id;
+    await page.goto(`${server.base}/#/sign/${encodeURIComponent(id)}`);
+    await page.waitForFunction(() => window.signweave?.metrics.firstSigningFrame_ms !== null || window.signweave?.state.error,
+      null, { timeout: 60_000 });
+    const r = await page.evaluate(() => ({
+      error: window.signweave.state.error,
+      first: window.signweave.metrics.firstSigningFrame_ms,
+      startup: window.signweave.metrics.startup,
+      userTiming: performance.getEntriesByType('mark').map((m) => m.name),
+    }));
+    assert.equal(r.error, null);
+    const { marks, measures, resources } = r.startup;
+    for (const step of STEPS) {
+      assert.ok(Number.isFinite(marks[step]) && marks[step] >= 0, `mark ${step}: ${marks[step]}`);
+      assert.ok(marks[step] <= r.first + 0.1, `${step} (${marks[step]} ms) after the first signing frame (${r.first} ms)`);
+      assert.ok(r.userTiming.includes(`sw:${step}`), `sw:${step} is a User Timing mark too`);
+    }
+    assert.ok(Math.abs(marks['first-signing-frame'] - r.first) < 0.1, 'the mark is the metric the bench reads');
+    for (const [a, b] of BEFORE) assert.ok(marks[a] <= marks[b], `${a} (${marks[a]} ms) should not come after ${b} (${marks[b]} ms)`);
+    assert.ok(marks['html-received'] <= marks['app-start'], 'the page arrived before its script ran');
+    for (const [name, ms] of Object.entries(measures)) assert.ok(Number.isFinite(ms) && ms >= 0, `span ${name}: ${ms}`);
+    for (const span of ['wasm-download-and-compile', 'avatar-parse', 'sign-fetch', 'synthesis']) assert.ok(span in measures, `span ${span}`);
+
+    // The waterfall: the core and the avatar were requested before either had finished arriving.
+    const wasm = resources.find((x) => /^gen\/signweave-(simd|scalar)\.wasm$/.test(x.name));
+    const glb = resources.find((x) => x.name === 'models/signweave-avatar.glb');
+    assert.ok(wasm && glb, `resources: ${resources.map((x) => x.name).join(', ')}`);
+    assert.ok(glb.start_ms <= wasm.end_ms && wasm.start_ms <= glb.end_ms, `downloads overlap: wasm ${wasm.start_ms}–${wasm.end_ms}, avatar ${glb.start_ms}–${glb.end_ms}`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
