@@ -175,6 +175,99 @@ void chain_points(const glm::vec3 bind[4], const glm::quat rot[3], glm::vec3 out
   for (int i = 0; i < 3; ++i) out[i + 1] = out[i] + rot[i] * (bind[i + 1] - bind[i]);
 }
 
+// Thumb IK (see solve_handshape). Why not a search with accept/reject steps: the solve used to
+// be a coordinate descent that halved its step when no move improved the cost by a 1e-3 margin
+// and stopped on a step tolerance. Every one of those choices is a discontinuity: the path (and
+// the local minimum it ends in) jumped when the cost moved by one rounding, and the WASM SIMD
+// build (where LLVM's SLP vectoriser compiles the inlined cost differently from the out-of-line
+// copy that scored the start) ended 0.68 rad away from native (docs/SYNTHESIS.md).
+// This solve is a fixed schedule of damped Gauss-Newton (Levenberg-Marquardt) steps with no
+// branch on a value: no accept/reject, no early stop, the joint limits applied by a projection
+// (a clamp, continuous) after each step. The result is a continuous function of the rig and the
+// shape, so a last-bit difference in any build stays a small difference (tested: a 1e-6 change
+// of the input moves the pose < 1e-4 rad). Tried and rejected: limits as a one-sided quadratic
+// penalty (an unpenalised step past a limit threw the iterates 1000 rad away) and a step-length
+// cap with it (it stalled in a local minimum 5 cm from a reachable fingertip).
+constexpr int kThumbVars = 6;
+// Pull towards the preset angles (per rad^2; for the finger curl per unit of curl). It makes the
+// minimum unique (the tip position fixes 3 of the 6 variables), conditions the flat directions
+// (opposition barely moves the tip) and keeps the pose near the configured one. J^T J is ~1e-3,
+// so the pull costs ~2% of the preset's miss (< 1 mm for a pinch).
+constexpr float kThumbPrior = 2e-5f;
+// Levenberg-Marquardt damping (m^2 per rad^2) on a fixed decreasing schedule, and the iteration
+// count. The Jacobian's entries are ~0.02-0.06 m/rad (J^T J ~ 1e-3): 1e-4 damps the first
+// steps from a far preset; the damping then falls below the prior (x0.6 a step) so the last
+// steps are Gauss-Newton steps that converge along the prior's shallow valley too (with a
+// constant damping above the prior, the end point depends on where the path stopped). The
+// floor keeps the steps damped where the target is out of reach (a buried fingertip in a fist:
+// a large residual, where the Gauss-Newton model is poor).
+constexpr float kThumbDamping = 1e-4f;
+constexpr float kThumbDampingDecay = 0.6f;
+constexpr float kThumbDampingFloor = 1e-6f;
+constexpr int kThumbIterations = 40;
+// Central-difference step for the Jacobian (rad): the tip is ~0.1 m from the thumb base, so
+// float rounding puts ~1e-8 m of noise into each difference; 1e-2 keeps that at 1e-6 m/rad (it
+// would be 1e-5 at 1e-3, and move an unreachable-target solution by ~2e-4 rad), while the
+// truncation error (~h^2/6 = 2e-5 relative) is smooth and only biases the path, not the solution
+// of a reachable target.
+constexpr float kJacobianStep = 1e-2f;
+
+// Solves A y = b for a symmetric positive definite A by Cholesky: no pivoting, hence no
+// data-dependent choice (A = J^T J + damping + prior is positive definite by construction).
+void solve_spd(float A[kThumbVars][kThumbVars], const float b[kThumbVars], float y[kThumbVars]) {
+  float L[kThumbVars][kThumbVars] = {};
+  for (int i = 0; i < kThumbVars; ++i)
+    for (int j = 0; j <= i; ++j) {
+      float sum = A[i][j];
+      for (int k = 0; k < j; ++k) sum -= L[i][k] * L[j][k];
+      L[i][j] = i == j ? std::sqrt(std::max(sum, 1e-12f)) : sum / L[j][j];
+    }
+  float z[kThumbVars];
+  for (int i = 0; i < kThumbVars; ++i) {
+    float sum = b[i];
+    for (int k = 0; k < i; ++k) sum -= L[i][k] * z[k];
+    z[i] = sum / L[i][i];
+  }
+  for (int i = kThumbVars - 1; i >= 0; --i) {
+    float sum = z[i];
+    for (int k = i + 1; k < kThumbVars; ++k) sum -= L[k][i] * y[k];
+    y[i] = sum / L[i][i];
+  }
+}
+
+// Minimises |error(x)|^2 + prior |x - x0|^2 within the bounds; x holds the start and the result.
+// error(x) returns two 3-vectors (two points' misses; the contact solve leaves the second zero).
+using ThumbError = std::array<glm::vec3, 2>;
+template <typename ErrorFn>
+void solve_thumb_lm(const ErrorFn& error, const float x0[kThumbVars],
+                    const FingerLimits bounds[kThumbVars], float x[kThumbVars]) {
+  float damping = kThumbDamping;
+  for (int iter = 0; iter < kThumbIterations; ++iter) {
+    ThumbError e = error(x);
+    ThumbError J[kThumbVars];
+    for (int i = 0; i < kThumbVars; ++i) {
+      // The probe may leave the bounds: the kinematics are smooth beyond them, and a one-sided
+      // difference at a bound would be a switch.
+      float saved = x[i];
+      x[i] = saved + kJacobianStep;
+      ThumbError plus = error(x);
+      x[i] = saved - kJacobianStep;
+      ThumbError minus = error(x);
+      x[i] = saved;
+      for (int k = 0; k < 2; ++k) J[i][k] = (plus[k] - minus[k]) * (0.5f / kJacobianStep);
+    }
+    float A[kThumbVars][kThumbVars], g[kThumbVars], dx[kThumbVars];
+    for (int i = 0; i < kThumbVars; ++i) {
+      for (int j = 0; j < kThumbVars; ++j) A[i][j] = glm::dot(J[i][0], J[j][0]) + glm::dot(J[i][1], J[j][1]);
+      A[i][i] += damping + kThumbPrior;
+      g[i] = -(glm::dot(J[i][0], e[0]) + glm::dot(J[i][1], e[1]) + kThumbPrior * (x[i] - x0[i]));
+    }
+    solve_spd(A, g, dx);
+    for (int i = 0; i < kThumbVars; ++i) x[i] = clampf(x[i] + dx[i], bounds[i]);
+    damping = std::max(kThumbDampingFloor, damping * kThumbDampingDecay);  // the schedule, not a test
+  }
+}
+
 }  // namespace
 
 const HandLimits& hand_limits() {
@@ -277,8 +370,89 @@ void pose_fingers(const Rig& rig, Side side, const HandAngles& angles, const glm
   for (int i = 0; i < 3; ++i) pose->set(a.fingers[0].bones[i], hand * r[i]);
 }
 
+namespace {
+
+// Thumb across (HamNoSys thumb-across modifier; ASL S, A-variants, B, E, U, V): the thumb lies
+// across the front of the curled fingers (S: over the index and middle middle phalanges) or, when
+// the fingers are straight or only hooked (B, E), across the palm. The preset angles cannot do
+// both — the front of a fist is ~4 cm palmar of the palm — and before this solve the preset put
+// the thumb tip 8.8 cm straight out of the palm. So the thumb tip is placed by the thumb IK on a
+// target computed from the posed fingers:
+//   front_k = middle of finger k's middle phalanx + palm normal x (finger + thumb radius),
+//   F = sum w_k front_k / sum w_k with w_k = the finger's knuckle flexion / 90 deg (curled ones),
+//   P = on the palm at the ring finger's line, thumb radius above the palm surface,
+//   goal = P + min(1, sum w_k) (F - P), and the thumb's IP joint one distal phalanx radial of it
+// — every weight continuous, so the pose is continuous in the shape.
+ThumbAngles solve_thumb_across(const Rig& rig, Side side, const HandAngles& angles) {
+  const ArmRig& a = rig.arms[side];
+  const HandLimits& lim = hand_limits();
+  const glm::vec3 n = a.palm_normal;
+  const float thumb_radius = 1.2f * a.finger_radius_m;  // the thumb is thicker than a finger
+  glm::vec3 front_sum(0.0f);
+  float weight_sum = 0.0f;
+  for (int f = 1; f < 5; ++f) {
+    FingerGeom fg = finger_geom(rig, side, f);
+    glm::quat fr[3];
+    finger_rotations(rig, side, fg, angles.fingers[f - 1], fr);
+    glm::vec3 fp[4];
+    chain_points(fg.p, fr, fp);
+    float w = std::min(1.0f, std::max(0.0f, angles.fingers[f - 1].mcp_flex / (90.0f * kDeg)));
+    front_sum += w * (0.5f * (fp[1] + fp[2]) + (a.finger_radius_m + thumb_radius) * n);
+    weight_sum += w;
+  }
+  const glm::vec3 centre = bind_palm_centre(rig, side);
+  const glm::vec3 ring_knuckle = rig.bind_pos[a.fingers[3].bones[0]];
+  const glm::vec3 on_palm = centre + glm::dot(ring_knuckle - centre, a.radial) * a.radial + thumb_radius * n;
+  const float eps = 1e-3f;  // keeps the mean defined (and continuous) when no finger is curled
+  const glm::vec3 front = (front_sum + eps * on_palm) / (weight_sum + eps);
+  const glm::vec3 goal = on_palm + std::min(1.0f, weight_sum) * (front - on_palm);
+
+  ThumbGeom tg = thumb_geom(rig, side);
+  glm::vec3 thumb_rel[4];
+  for (int i = 0; i < 4; ++i) thumb_rel[i] = tg.p[i] - tg.p[0];
+  const glm::vec3 goal_rel = goal - tg.p[0];
+  // The distal phalanx lies across the hand too (its IP joint radial of the tip): with the tip
+  // alone as the target, the thumb reached the front of the fist from inside it, its distal
+  // phalanx 13 mm deep in the middle finger.
+  // Only in front of curled fingers (weighted like the goal): on a flat palm (B, E) the thumb
+  // cannot fold that far across in the palm plane and the two targets pulled it outwards.
+  const glm::vec3 ip_goal_rel = goal_rel + glm::length(tg.p[3] - tg.p[2]) * a.radial;
+  const float in_front = std::min(1.0f, weight_sum);
+  ThumbAngles start;
+  { ThumbAngles unused; thumb_states(notation::kThumbAcross, &unused, &start); }
+  // The sixth variable (a finger curl in the contact solve) is unused here: held at 0.
+  const float x0[kThumbVars] = {start.cmc_flex, start.cmc_abd, start.opposition, start.mcp_flex, start.ip_flex, 0.0f};
+  const FingerLimits bounds[kThumbVars] = {lim.cmc_flex, lim.cmc_abd, lim.opposition, lim.thumb_mcp,
+                                           lim.thumb_ip, FingerLimits{0.0f, 0.0f}};
+  auto error = [&](const float* v) {
+    glm::quat tr[3];
+    thumb_rotations(tg, n, ThumbAngles{v[0], v[1], v[2], v[3], v[4]}, tr);
+    glm::vec3 tp[4];
+    chain_points(thumb_rel, tr, tp);
+    return ThumbError{tp[3] - goal_rel, in_front * (tp[2] - ip_goal_rel)};
+  };
+  float x[kThumbVars];
+  std::copy(x0, x0 + kThumbVars, x);
+  solve_thumb_lm(error, x0, bounds, x);
+  return ThumbAngles{x[0], x[1], x[2], x[3], x[4]};
+}
+
+}  // namespace
+
 HandAngles solve_handshape(const Rig& rig, Side side, const notation::HandShape& shape) {
   HandAngles angles = handshape_angles(shape);
+  if (shape.fingers[0].id == notation::kThumbAcross) {
+    // F^1(t) across: t blends from the state's begin (alongside) to the solved across pose.
+    const notation::FingerConfig& c = shape.fingers[0];
+    float t = c.has_t ? std::min(1.0f, std::max(0.0f, c.t)) : 1.0f;
+    ThumbAngles beg, end;
+    thumb_states(notation::kThumbAcross, &beg, &end);
+    ThumbAngles solved = solve_thumb_across(rig, side, angles);
+    angles.thumb = lerp(beg, solved, t);
+    angles.thumb.cmc_flex -= 0.35f * std::min(1.0f, std::max(0.0f, c.spread));  // as handshape_angles
+    clamp_all(&angles);
+    return angles;
+  }
   int target = thumb_contact_finger(shape);
   if (target < 0) return angles;
   const ArmRig& a = rig.arms[side];
@@ -292,47 +466,32 @@ HandAngles solve_handshape(const Rig& rig, Side side, const notation::HandShape&
   const float gap = 0.8f * a.finger_radius_m;
 
   // x = thumb cmc_flex, cmc_abd, opposition, mcp, ip, target finger curl (0 configured, 1 curled).
-  float x[6] = {angles.thumb.cmc_flex, angles.thumb.cmc_abd, angles.thumb.opposition,
-                angles.thumb.mcp_flex, angles.thumb.ip_flex, 0.0f};
-  const FingerLimits bounds[6] = {lim.cmc_flex, lim.cmc_abd, lim.opposition, lim.thumb_mcp,
-                                  lim.thumb_ip, FingerLimits{0.0f, 1.0f}};
-  auto evaluate = [&](const float* v) {
+  const float x0[kThumbVars] = {angles.thumb.cmc_flex, angles.thumb.cmc_abd, angles.thumb.opposition,
+                                  angles.thumb.mcp_flex, angles.thumb.ip_flex, 0.0f};
+  const FingerLimits bounds[kThumbVars] = {lim.cmc_flex, lim.cmc_abd, lim.opposition, lim.thumb_mcp,
+                                             lim.thumb_ip, FingerLimits{0.0f, 1.0f}};
+  // Contact error (thumb tip minus goal), with the chains measured from the thumb base so that
+  // the metre-scale model coordinates do not cost float precision in the Jacobian's differences.
+  glm::vec3 thumb_rel[4], finger_rel[4];
+  for (int i = 0; i < 4; ++i) {
+    thumb_rel[i] = tg.p[i] - tg.p[0];
+    finger_rel[i] = fg.p[i] - tg.p[0];
+  }
+  auto contact_error = [&](const float* v) {
     ThumbAngles t{v[0], v[1], v[2], v[3], v[4]};
     FingerAngles f = lerp(configured, curled, v[5]);
     glm::quat tr[3], fr[3];
     thumb_rotations(tg, a.palm_normal, t, tr);
     finger_rotations(rig, side, fg, f, fr);
     glm::vec3 tp[4], fp[4];
-    chain_points(tg.p, tr, tp);
-    chain_points(fg.p, fr, fp);
+    chain_points(thumb_rel, tr, tp);
+    chain_points(finger_rel, fr, fp);
     glm::vec3 pad = fr[2] * fg.s0;  // palmar side of the distal phalanx
-    glm::vec3 goal = fp[3] + gap * pad;
-    glm::vec3 e = tp[3] - goal;
-    return glm::dot(e, e) + 1e-5f * v[5];  // prefer the finger as configured
+    return ThumbError{tp[3] - (fp[3] + gap * pad), glm::vec3(0.0f)};
   };
-  // Coordinate descent with shrinking steps: deterministic (native == WASM), bounded work.
-  float best = evaluate(x);
-  float step = 0.25f;
-  for (int sweep = 0; sweep < 60 && step > 2e-4f; ++sweep) {
-    bool improved = false;
-    for (int i = 0; i < 6; ++i) {
-      for (float dir : {1.0f, -1.0f}) {
-        float saved = x[i];
-        float span = i == 5 ? step * 2.0f : step;
-        x[i] = std::min(bounds[i].hi, std::max(bounds[i].lo, saved + dir * span));
-        float c = evaluate(x);
-        // A step must improve by a clear margin: builds that round the last bit differently
-        // (native, WASM scalar, WASM SIMD) then take the same path to the same solution.
-        if (c < best * (1.0f - 1e-3f) - 1e-9f) {
-          best = c;
-          improved = true;
-          break;
-        }
-        x[i] = saved;
-      }
-    }
-    if (!improved) step *= 0.5f;
-  }
+  float x[kThumbVars];
+  std::copy(x0, x0 + kThumbVars, x);
+  solve_thumb_lm(contact_error, x0, bounds, x);
   angles.thumb = ThumbAngles{x[0], x[1], x[2], x[3], x[4]};
   angles.fingers[target - 1] = lerp(configured, curled, x[5]);
   clamp_all(&angles);
