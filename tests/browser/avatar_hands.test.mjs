@@ -20,6 +20,9 @@ const ASL_S = 'R(H(fist, thumbacross), E(u), P(o), Loc(neutral, right))';
 
 async function showHand(page, notation, picture) {
   await page.fill('#editor-text', notation);
+  // The preview has run for THIS text (the highlight layer is redrawn from it, plus a zero-width
+  // space): an 'ok' left from the previous text must not let the test measure the previous pose.
+  await page.waitForFunction((t) => document.getElementById('editor-highlight').textContent.replace('\u200b', '') === t, notation, { timeout: 10_000 });
   await page.waitForSelector('#editor-diagnostics li.ok', { timeout: 10_000 });
   await page.waitForFunction(() => window.signweave.state.playing && window.signweave.state.clipDuration_s > 0);
   if (await page.evaluate(() => window.signweave.state.playing)) await page.click('#play');
