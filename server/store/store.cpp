@@ -296,40 +296,32 @@ SignRecord Store::write_sign(Database& db, std::int64_t existing_id, const SignI
   std::string tags = json(input.tags).dump();
   std::string gloss_norm = normalize_for_match(input.gloss);
   std::int64_t id = existing_id;
+  // Parameters 1..10 are the same columns, in the same order, in the INSERT and the UPDATE.
+  auto bind_sign_columns = [&](Statement& st) -> Statement& {
+    return st.bind(1, language)
+        .bind(2, input.gloss)
+        .bind(3, gloss_norm)
+        .bind(4, input.notation)
+        .bind(5, format)
+        .bind(6, tags)
+        .bind(7, input.sense)
+        .bind_optional(8, compiled)
+        .bind(9, input.description)
+        .bind(10, input.starter ? 1 : 0);
+  };
   if (existing_id == 0) {
-    db.prepare(
+    Statement& insert = db.prepare(
           "INSERT INTO signs (language, gloss, gloss_norm, notation, format, tags, sense, compiled, "
           "description, starter, revision, created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 1, "
-          "strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))")
-        .bind(1, language)
-        .bind(2, input.gloss)
-        .bind(3, gloss_norm)
-        .bind(4, input.notation)
-        .bind(5, format)
-        .bind(6, tags)
-        .bind(7, input.sense)
-        .bind_optional(8, compiled)
-        .bind(9, input.description)
-        .bind(10, input.starter ? 1 : 0)
-        .run();
+          "strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))");
+    bind_sign_columns(insert).run();
     id = db.last_insert_rowid();
   } else {
-    db.prepare(
+    Statement& update = db.prepare(
           "UPDATE signs SET language = ?, gloss = ?, gloss_norm = ?, notation = ?, format = ?, "
           "tags = ?, sense = ?, compiled = ?, description = ?, starter = ?, revision = revision + 1, "
-          "updated_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE id = ?")
-        .bind(1, language)
-        .bind(2, input.gloss)
-        .bind(3, gloss_norm)
-        .bind(4, input.notation)
-        .bind(5, format)
-        .bind(6, tags)
-        .bind(7, input.sense)
-        .bind_optional(8, compiled)
-        .bind(9, input.description)
-        .bind(10, input.starter ? 1 : 0)
-        .bind(11, id)
-        .run();
+          "updated_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE id = ?");
+    bind_sign_columns(update).bind(11, id).run();
     db.prepare("DELETE FROM sign_keywords WHERE sign_id = ?").bind(1, id).run();
     db.prepare("DELETE FROM alphabet WHERE sign_id = ?").bind(1, id).run();
   }

@@ -7,6 +7,8 @@
 #include <map>
 #include <sstream>
 
+#include "skeleton/synthetic_humanoid.h"
+
 namespace sw::avatar {
 namespace {
 
@@ -17,54 +19,45 @@ struct JointSpec {
   glm::vec3 position;  // model space, T-pose
 };
 
+// Mixamo's name for a canonical joint name, for the Mixamo naming option (the loader maps it back
+// through skeleton/humanoid_names).
+std::string mixamo_name(const std::string& canonical) {
+  static const std::pair<const char*, const char*> kTrunk[] = {
+      {"hips", "Hips"}, {"spine", "Spine"}, {"chest", "Spine1"}, {"upperChest", "Spine2"},
+      {"neck", "Neck"}, {"head", "Head"}, {"jaw", "Jaw"}, {"leftEye", "LeftEye"}, {"rightEye", "RightEye"}};
+  for (const auto& [c, m] : kTrunk)
+    if (canonical == c) return m;
+  const bool left = canonical.rfind("left", 0) == 0;
+  const std::string side = left ? "Left" : "Right";
+  const std::string part = canonical.substr(left ? 4 : 5);
+  static const std::pair<const char*, const char*> kLimb[] = {
+      {"Shoulder", "Shoulder"}, {"UpperArm", "Arm"}, {"LowerArm", "ForeArm"}, {"Hand", "Hand"},
+      {"UpperLeg", "UpLeg"}, {"LowerLeg", "Leg"}, {"Foot", "Foot"}, {"Toes", "ToeBase"},
+      {"ThumbMetacarpal", "HandThumb1"}, {"ThumbProximal", "HandThumb2"}, {"ThumbDistal", "HandThumb3"},
+      {"ThumbTip", "HandThumb4"}};
+  for (const auto& [c, m] : kLimb)
+    if (part == c) return side + m;
+  static const std::pair<const char*, const char*> kFinger[] = {
+      {"Index", "Index"}, {"Middle", "Middle"}, {"Ring", "Ring"}, {"Little", "Pinky"}};
+  static const std::pair<const char*, const char*> kPhalanx[] = {
+      {"Metacarpal", "0"}, {"Proximal", "1"}, {"Intermediate", "2"}, {"Distal", "3"}, {"Tip", "4"}};
+  for (const auto& [f, mf] : kFinger)
+    for (const auto& [ph, n] : kPhalanx)
+      if (part == std::string(f) + ph) return side + "Hand" + mf + n;
+  return canonical;
+}
+
+// The joints of the project's synthetic humanoid (with finger metacarpals), as specs.
 std::vector<JointSpec> joint_specs() {
-  std::vector<JointSpec> j = {
-      {"hips", "Hips", "", {0.0f, 0.95f, 0.0f}},
-      {"spine", "Spine", "hips", {0.0f, 1.05f, 0.0f}},
-      {"chest", "Spine1", "spine", {0.0f, 1.20f, 0.0f}},
-      {"upperChest", "Spine2", "chest", {0.0f, 1.32f, 0.0f}},
-      {"neck", "Neck", "upperChest", {0.0f, 1.45f, 0.0f}},
-      {"head", "Head", "neck", {0.0f, 1.55f, 0.0f}},
-  };
-  for (int s = 0; s < 2; ++s) {
-    const float x = s == 0 ? 1.0f : -1.0f;  // the figure's left is +X
-    const std::string side = s == 0 ? "left" : "right";
-    const std::string mside = s == 0 ? "Left" : "Right";
-    auto add = [&](const std::string& c, const std::string& m, const std::string& parent, glm::vec3 p) {
-      p.x *= x;
-      j.push_back({side + c, mside + m, parent.empty() ? "upperChest" : side + parent, p});
-    };
-    add("Shoulder", "Shoulder", "", {0.03f, 1.42f, 0.0f});
-    add("UpperArm", "Arm", "Shoulder", {0.17f, 1.42f, 0.0f});
-    add("LowerArm", "ForeArm", "UpperArm", {0.45f, 1.42f, 0.0f});
-    add("Hand", "Hand", "LowerArm", {0.70f, 1.42f, 0.0f});
-    add("ThumbMetacarpal", "HandThumb1", "Hand", {0.72f, 1.41f, 0.03f});
-    add("ThumbProximal", "HandThumb2", "ThumbMetacarpal", {0.76f, 1.41f, 0.06f});
-    add("ThumbDistal", "HandThumb3", "ThumbProximal", {0.79f, 1.41f, 0.08f});
-    add("ThumbTip", "HandThumb4", "ThumbDistal", {0.815f, 1.41f, 0.095f});
-    const char* fingers[] = {"Index", "Middle", "Ring", "Little"};
-    const char* mfingers[] = {"Index", "Middle", "Ring", "Pinky"};
-    const float z[] = {0.03f, 0.01f, -0.01f, -0.03f};
-    const float scale[] = {1.0f, 1.08f, 1.0f, 0.8f};
-    for (int f = 0; f < 4; ++f) {
-      const std::string c = fingers[f];
-      const std::string m = std::string("Hand") + mfingers[f];
-      add(c + "Metacarpal", m + "0", "Hand", {0.72f, 1.42f, z[f] * 0.8f});
-      float px = 0.80f;
-      add(c + "Proximal", m + "1", c + "Metacarpal", {px, 1.42f, z[f]});
-      px += 0.045f * scale[f];
-      add(c + "Intermediate", m + "2", c + "Proximal", {px, 1.42f, z[f]});
-      px += 0.028f * scale[f];
-      add(c + "Distal", m + "3", c + "Intermediate", {px, 1.42f, z[f]});
-      px += 0.024f * scale[f];
-      add(c + "Tip", m + "4", c + "Distal", {px, 1.42f, z[f]});
-    }
-    j.push_back({side + "UpperLeg", mside + "UpLeg", "hips", {0.09f * x, 0.92f, 0.0f}});
-    j.push_back({side + "LowerLeg", mside + "Leg", side + "UpperLeg", {0.09f * x, 0.50f, 0.0f}});
-    j.push_back({side + "Foot", mside + "Foot", side + "LowerLeg", {0.09f * x, 0.08f, 0.0f}});
-    j.push_back({side + "Toes", mside + "ToeBase", side + "Foot", {0.09f * x, 0.02f, 0.12f}});
+  const skeleton::Skeleton s = skeleton::make_synthetic_humanoid({/*finger_metacarpals=*/true});
+  const std::vector<glm::vec3> model = skeleton::rest_positions(s);
+  std::vector<JointSpec> specs;
+  for (std::size_t i = 0; i < s.joints.size(); ++i) {
+    const skeleton::Joint& j = s.joints[i];
+    specs.push_back({j.name, mixamo_name(j.name), j.parent < 0 ? "" : s.joints[static_cast<std::size_t>(j.parent)].name,
+                     model[i]});
   }
-  return j;
+  return specs;
 }
 
 struct MeshBuilder {

@@ -31,7 +31,7 @@ int synthetic_avatar_node(const tinygltf::Model& model, const std::string& canon
 
 // Where the synthetic figure's parts are, for geometric assertions.
 struct SyntheticAvatarGeometry {
-  static constexpr float kHeadCentreY = 1.66f;
+  static constexpr float kHeadCentreY = 1.61f;  // the eye joints (1.625) just above the centre
   static constexpr float kHeadRadiusZ = 0.095f;
   static constexpr float kTorsoRadiusX = 0.16f;
   static constexpr float kTorsoRadiusZ = 0.10f;

@@ -805,19 +805,16 @@ bool parse_direction_word(std::string_view word, Direction* d) {
 std::vector<SignParse> parse_formula_text(std::string_view text) {
   std::vector<SignParse> out;
   const LineIndex index(text);
-  std::size_t line_start = 0;
-  int line_number = 1;
-  while (line_start <= text.size()) {
-    std::size_t line_end = text.find('\n', line_start);
-    if (line_end == std::string_view::npos) line_end = text.size();
-    const std::size_t end = content_end(text, line_start, line_end);
+  for (const TextLine& line : split_lines(text)) {
+    const std::size_t line_start = line.start;
+    const std::size_t end = content_end(text, line_start, line.end);
     std::size_t lead = 0;
     const std::string_view content = trim_view(text.substr(line_start, end - line_start), &lead);
     if (!content.empty()) {
       SignParse sign;
       const std::size_t content_start = line_start + lead;
       sign.offset = content_start;
-      sign.line = line_number;
+      sign.line = line.number;
       std::size_t formula_start = content_start;
       const std::size_t eq = find_gloss_separator(content);
       if (eq != std::string_view::npos) {
@@ -837,9 +834,6 @@ std::vector<SignParse> parse_formula_text(std::string_view text) {
       }
       out.push_back(std::move(sign));
     }
-    if (line_end == text.size()) break;
-    line_start = line_end + 1;
-    ++line_number;
   }
   return out;
 }

@@ -58,15 +58,7 @@ class GReader {
  private:
   // ---- diagnostics
   void report(const XmlElement& e, std::string symbol, std::string message, Severity severity) {
-    Diagnostic d;
-    d.severity = severity;
-    d.offset = e.offset;
-    d.length = e.length;
-    d.line = e.line;
-    d.column = e.column;
-    d.symbol = std::move(symbol);
-    d.message = std::move(message);
-    out_->diagnostics.push_back(std::move(d));
+    out_->diagnostics.push_back(diagnostic_at(e, std::move(symbol), std::move(message), severity));
   }
   void error(const XmlElement& e, std::string symbol, std::string message) {
     report(e, std::move(symbol), std::move(message), Severity::Error);

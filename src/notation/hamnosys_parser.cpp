@@ -157,15 +157,7 @@ class Reader {
   // ---- diagnostics
   void report(std::size_t i, const std::string& message, Severity severity) {
     const HamSymbolRef& r = s_[i];
-    Diagnostic d;
-    d.severity = severity;
-    d.offset = r.offset;
-    d.length = r.length;
-    d.line = r.line;
-    d.column = r.column;
-    d.symbol = r.text;
-    d.message = message;
-    diags_->push_back(std::move(d));
+    diags_->push_back(Diagnostic{severity, r.offset, r.length, r.line, r.column, r.text, message});
   }
   void error(std::size_t i, const std::string& message) { report(i, message, Severity::Error); }
   void warning(std::size_t i, const std::string& message) { report(i, message, Severity::Warning); }
@@ -861,21 +853,17 @@ bool parse_hamnosys_symbols(const std::vector<HamSymbolRef>& symbols, std::size_
 std::vector<SignParse> parse_hamnosys_text(std::string_view text) {
   std::vector<SignParse> out;
   const LineIndex index(text);
-  std::size_t line_start = 0;
-  int line_number = 1;
-  while (line_start <= text.size()) {
-    std::size_t line_end = text.find('\n', line_start);
-    if (line_end == std::string_view::npos) line_end = text.size();
-    std::size_t end = text.find('#', line_start);
-    if (end == std::string_view::npos || end > line_end) end = line_end;
-    std::size_t a = line_start;
+  for (const TextLine& line : split_lines(text)) {
+    std::size_t end = text.find('#', line.start);  // a comment runs to the end of the line
+    if (end == std::string_view::npos || end > line.end) end = line.end;
+    std::size_t a = line.start;
     while (a < end && is_space(text[a])) ++a;
     std::size_t b = end;
     while (b > a && is_space(text[b - 1])) --b;
     if (a < b) {
       SignParse sign;
       sign.offset = a;
-      sign.line = line_number;
+      sign.line = line.number;
       std::size_t symbols_start = a;
       const std::size_t eq = text.substr(a, b - a).find('=');
       if (eq != std::string_view::npos) {
@@ -896,9 +884,6 @@ std::vector<SignParse> parse_hamnosys_text(std::string_view text) {
       }
       out.push_back(std::move(sign));
     }
-    if (line_end == text.size()) break;
-    line_start = line_end + 1;
-    ++line_number;
   }
   return out;
 }

@@ -8,19 +8,6 @@
 namespace sw::notation {
 namespace {
 
-Diagnostic at_element(const XmlElement& e, std::string symbol, std::string message,
-                      Severity severity = Severity::Error) {
-  Diagnostic d;
-  d.severity = severity;
-  d.offset = e.offset;
-  d.length = e.length;
-  d.line = e.line;
-  d.column = e.column;
-  d.symbol = std::move(symbol);
-  d.message = std::move(message);
-  return d;
-}
-
 void collect_signs(const XmlElement& e, std::vector<SignParse>* out, int depth) {
   if (e.name == "hns_sign" || e.name == "hamgestural_sign") {
     if (!e.closed) return;  // cut off by a document error: reported by the XML reader
@@ -52,18 +39,18 @@ SignParse read_hns_sign(const XmlElement& sign) {
         }
       }
     } else {
-      out.diagnostics.push_back(at_element(c, c.name, "expected hamnosys_manual or hamnosys_nonmanual in hns_sign, found <" + c.name + ">", Severity::Warning));
+      out.diagnostics.push_back(diagnostic_at(c, c.name, "expected hamnosys_manual or hamnosys_nonmanual in hns_sign, found <" + c.name + ">", Severity::Warning));
     }
   }
   if (!manual) {
-    out.diagnostics.push_back(at_element(sign, "hns_sign", "expected a <hamnosys_manual> element in hns_sign, found none"));
+    out.diagnostics.push_back(diagnostic_at(sign, "hns_sign", "expected a <hamnosys_manual> element in hns_sign, found none"));
     return out;
   }
   std::vector<HamSymbolRef> symbols;
   for (const XmlElement& c : manual->children) {
     const HamSymbolInfo* info = ham_symbol_by_name(c.name);
     if (!info) {
-      out.diagnostics.push_back(at_element(c, c.name, "unknown HamNoSys symbol element <" + c.name + ">: expected a name such as hamflathand"));
+      out.diagnostics.push_back(diagnostic_at(c, c.name, "unknown HamNoSys symbol element <" + c.name + ">: expected a name such as hamflathand"));
       continue;
     }
     HamSymbolRef r;
@@ -76,7 +63,7 @@ SignParse read_hns_sign(const XmlElement& sign) {
     symbols.push_back(std::move(r));
   }
   if (symbols.empty()) {
-    out.diagnostics.push_back(at_element(*manual, "hamnosys_manual", "expected HamNoSys symbol elements in hamnosys_manual, found none"));
+    out.diagnostics.push_back(diagnostic_at(*manual, "hamnosys_manual", "expected HamNoSys symbol elements in hamnosys_manual, found none"));
     return out;
   }
   if (parse_hamnosys_symbols(symbols, manual->offset, &spec, &out.diagnostics)) out.spec = std::move(spec);

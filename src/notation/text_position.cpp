@@ -105,4 +105,17 @@ Diagnostic LineIndex::make(std::size_t offset, std::size_t length, std::string s
   return d;
 }
 
+std::vector<TextLine> split_lines(std::string_view text) {
+  std::vector<TextLine> lines;
+  std::size_t start = 0;
+  for (int number = 1;; ++number) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    lines.push_back({start, end, number});
+    if (end == text.size()) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
 }  // namespace sw::notation

@@ -21,6 +21,15 @@ void append_utf8(std::string* out, char32_t code_point);
 // "U+E0FF" for printing unknown symbols.
 std::string code_point_label(char32_t code_point);
 
+// One line of a text: bytes [start, end), the '\n' excluded, and its 1-based number.
+struct TextLine {
+  std::size_t start = 0, end = 0;
+  int number = 1;
+};
+// The '\n'-separated lines of a text, the last one included even without a '\n' (an empty text is
+// one empty line): how the one-sign-per-line notation readers walk their input.
+std::vector<TextLine> split_lines(std::string_view text);
+
 // Maps byte offsets of one text to 1-based line and column (columns count code points, as the
 // web editor does). Built once per text: O(lines) memory, O(log lines + line length) per query.
 class LineIndex {

@@ -263,4 +263,9 @@ std::string xml_escape(std::string_view text) {
   return out;
 }
 
+Diagnostic diagnostic_at(const XmlElement& e, std::string symbol, std::string message,
+                         Severity severity) {
+  return Diagnostic{severity, e.offset, e.length, e.line, e.column, std::move(symbol), std::move(message)};
+}
+
 }  // namespace sw::notation

@@ -46,6 +46,11 @@ struct XmlElement {
 // true when the document is well-formed; otherwise `diagnostics` says where it is not.
 bool read_xml(std::string_view text, XmlElement* root, std::vector<Diagnostic>* diagnostics);
 
+// A diagnostic pointing at element `e`'s start tag (offset, length, line, column): how the SiGML
+// readers report what was wrong and where, one definition so both report positions alike.
+Diagnostic diagnostic_at(const XmlElement& e, std::string symbol, std::string message,
+                         Severity severity = Severity::Error);
+
 // Escapes text for an attribute value or character data (& < > " ').
 std::string xml_escape(std::string_view text);
 

@@ -1,4 +1,4 @@
-// The synthetic 65-joint humanoid and deterministic poses for it (synthetic_humanoid.h).
+// The synthetic humanoid skeleton and deterministic poses for it (synthetic_humanoid.h).
 #include "skeleton/synthetic_humanoid.h"
 
 #include <cmath>
@@ -7,45 +7,60 @@
 namespace sw::skeleton {
 namespace {
 
-int add(Skeleton& s, const std::string& name, int parent, glm::vec3 offset_m) {
-  Joint j;
-  j.name = name;
-  j.parent = parent;
-  j.rest.translation = offset_m;
-  s.joints.push_back(j);
-  return s.joint_count() - 1;
-}
+// Builds the skeleton from model-space bind positions (the way proportions are measured); the
+// rest translation of a joint is its offset from its parent.
+struct Builder {
+  Skeleton skeleton;
+  std::vector<glm::vec3> model;
+  int add(const std::string& name, int parent, glm::vec3 model_pos) {
+    Joint j;
+    j.name = name;
+    j.parent = parent;
+    j.rest.translation = parent < 0 ? model_pos : model_pos - model[static_cast<std::size_t>(parent)];
+    skeleton.joints.push_back(j);
+    model.push_back(model_pos);
+    return skeleton.joint_count() - 1;
+  }
+};
 
-void add_arm(Skeleton& s, int upper_chest, bool left) {
-  // +X is the signer's left (the avatar faces +Z).
-  const float x = left ? 1.0f : -1.0f;
-  const std::string side = left ? "left" : "right";
-  const int shoulder = add(s, side + "Shoulder", upper_chest, {0.02f * x, 0.12f, 0.0f});
-  const int upper = add(s, side + "UpperArm", shoulder, {0.10f * x, 0.0f, 0.0f});
-  const int lower = add(s, side + "LowerArm", upper, {0.27f * x, 0.0f, 0.0f});
-  const int hand = add(s, side + "Hand", lower, {0.25f * x, 0.0f, 0.0f});
-  int p = add(s, side + "ThumbMetacarpal", hand, {0.02f * x, -0.01f, 0.025f});
-  p = add(s, side + "ThumbProximal", p, {0.035f * x, 0.0f, 0.02f});
-  p = add(s, side + "ThumbDistal", p, {0.03f * x, 0.0f, 0.01f});
-  add(s, side + "ThumbTip", p, {0.025f * x, 0.0f, 0.005f});
-  const char* fingers[] = {"Index", "Middle", "Ring", "Little"};
+void add_arm(Builder& b, int upper_chest, bool left, bool finger_metacarpals) {
+  const float x = left ? 1.0f : -1.0f;  // +X is the signer's left (the figure faces +Z)
+  const std::string p = left ? "left" : "right";
+  const int sh = b.add(p + "Shoulder", upper_chest, {x * 0.03f, 1.43f, 0});
+  const int ua = b.add(p + "UpperArm", sh, {x * 0.17f, 1.43f, 0});
+  const int la = b.add(p + "LowerArm", ua, {x * 0.46f, 1.43f, 0});
+  const int hand = b.add(p + "Hand", la, {x * 0.72f, 1.43f, 0});
+  // Thumb: forward (+Z) and slightly down from the wrist, as in a relaxed T-pose hand.
+  const int t0 = b.add(p + "ThumbMetacarpal", hand, {x * 0.74f, 1.42f, 0.022f});
+  const int t1 = b.add(p + "ThumbProximal", t0, {x * 0.775f, 1.412f, 0.045f});
+  const int t2 = b.add(p + "ThumbDistal", t1, {x * 0.805f, 1.406f, 0.062f});
+  b.add(p + "ThumbTip", t2, {x * 0.833f, 1.402f, 0.076f});
+  const char* fn[4] = {"Index", "Middle", "Ring", "Little"};
+  const float z[4] = {0.028f, 0.009f, -0.010f, -0.026f};
+  const float knuckle[4] = {0.092f, 0.095f, 0.090f, 0.087f};  // wrist to knuckle
+  const float len[4][3] = {{0.045f, 0.026f, 0.022f}, {0.050f, 0.030f, 0.024f},
+                           {0.046f, 0.029f, 0.023f}, {0.040f, 0.024f, 0.021f}};
   for (int f = 0; f < 4; ++f) {
-    const float z = 0.03f - 0.02f * float(f);
-    const float scale = 1.0f - 0.1f * float(f > 1 ? f - 1 : 0);
-    int q = add(s, side + fingers[f] + "Proximal", hand, {0.09f * x, 0.0f, z});
-    q = add(s, side + fingers[f] + "Intermediate", q, {0.04f * scale * x, 0.0f, 0.0f});
-    q = add(s, side + fingers[f] + "Distal", q, {0.025f * scale * x, 0.0f, 0.0f});
-    add(s, side + fingers[f] + "Tip", q, {0.02f * scale * x, 0.0f, 0.0f});
+    const std::string n = p + fn[f];
+    const int m = finger_metacarpals ? b.add(n + "Metacarpal", hand, {x * 0.74f, 1.43f, z[f] * 0.6f}) : hand;
+    float xx = 0.72f + knuckle[f];
+    const int j1 = b.add(n + "Proximal", m, {x * xx, 1.43f, z[f]});
+    xx += len[f][0];
+    const int j2 = b.add(n + "Intermediate", j1, {x * xx, 1.43f, z[f]});
+    xx += len[f][1];
+    const int j3 = b.add(n + "Distal", j2, {x * xx, 1.43f, z[f]});
+    xx += len[f][2];
+    b.add(n + "Tip", j3, {x * xx, 1.43f, z[f]});
   }
 }
 
-void add_leg(Skeleton& s, int hips, bool left) {
+void add_leg(Builder& b, int hips, bool left) {
   const float x = left ? 1.0f : -1.0f;
-  const std::string side = left ? "left" : "right";
-  int p = add(s, side + "UpperLeg", hips, {0.09f * x, -0.05f, 0.0f});
-  p = add(s, side + "LowerLeg", p, {0.0f, -0.42f, 0.0f});
-  p = add(s, side + "Foot", p, {0.0f, -0.40f, 0.0f});
-  add(s, side + "Toes", p, {0.0f, -0.05f, 0.12f});
+  const std::string p = left ? "left" : "right";
+  const int ul = b.add(p + "UpperLeg", hips, {x * 0.09f, 0.95f, 0});
+  const int ll = b.add(p + "LowerLeg", ul, {x * 0.09f, 0.52f, 0});
+  const int ft = b.add(p + "Foot", ll, {x * 0.09f, 0.09f, 0});
+  b.add(p + "Toes", ft, {x * 0.09f, 0.02f, 0.12f});
 }
 
 // splitmix32-style integer hash -> [0, 1): identical on every platform.
@@ -60,22 +75,31 @@ float unit_hash(std::uint32_t& state) {
 
 }  // namespace
 
-Skeleton make_synthetic_humanoid() {
-  Skeleton s;
-  const int hips = add(s, "hips", -1, {0.0f, 0.95f, 0.0f});
-  const int spine = add(s, "spine", hips, {0.0f, 0.10f, 0.0f});
-  const int chest = add(s, "chest", spine, {0.0f, 0.12f, 0.0f});
-  const int upper_chest = add(s, "upperChest", chest, {0.0f, 0.12f, 0.0f});
-  const int neck = add(s, "neck", upper_chest, {0.0f, 0.15f, 0.0f});
-  const int head = add(s, "head", neck, {0.0f, 0.08f, 0.0f});
-  add(s, "jaw", head, {0.0f, -0.02f, 0.05f});
-  add(s, "leftEye", head, {0.03f, 0.07f, 0.08f});
-  add(s, "rightEye", head, {-0.03f, 0.07f, 0.08f});
-  add_arm(s, upper_chest, true);
-  add_arm(s, upper_chest, false);
-  add_leg(s, hips, true);
-  add_leg(s, hips, false);
-  return s;
+Skeleton make_synthetic_humanoid(const SyntheticHumanoidOptions& options) {
+  Builder b;
+  const int hips = b.add("hips", -1, {0, 1.00f, 0});
+  const int spine = b.add("spine", hips, {0, 1.10f, 0});
+  const int chest = b.add("chest", spine, {0, 1.22f, 0});
+  const int upper_chest = b.add("upperChest", chest, {0, 1.34f, 0});
+  const int neck = b.add("neck", upper_chest, {0, 1.46f, 0});
+  const int head = b.add("head", neck, {0, 1.56f, 0});
+  b.add("jaw", head, {0, 1.54f, 0.04f});
+  b.add("leftEye", head, {0.032f, 1.625f, 0.075f});
+  b.add("rightEye", head, {-0.032f, 1.625f, 0.075f});
+  add_arm(b, upper_chest, true, options.finger_metacarpals);
+  add_leg(b, hips, true);
+  add_arm(b, upper_chest, false, options.finger_metacarpals);
+  add_leg(b, hips, false);
+  return b.skeleton;
+}
+
+std::vector<glm::vec3> rest_positions(const Skeleton& skeleton) {
+  std::vector<glm::vec3> model(skeleton.joints.size());
+  for (std::size_t i = 0; i < skeleton.joints.size(); ++i) {
+    const Joint& j = skeleton.joints[i];
+    model[i] = j.rest.translation + (j.parent < 0 ? glm::vec3(0.0f) : model[static_cast<std::size_t>(j.parent)]);
+  }
+  return model;
 }
 
 std::vector<math::Transform> make_synthetic_pose(const Skeleton& skeleton, std::uint32_t seed,

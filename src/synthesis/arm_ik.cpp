@@ -176,28 +176,140 @@ const ArmLimits& arm_limits() {
   return limits;
 }
 
+ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& p) {
+  const ArmRig& a = rig.arms[side];
+  const glm::vec3 s0 = rig.bind_pos[a.upper];
+  ArmSegments seg;
+  seg.shoulder = a.shoulder >= 0 ? rig.bind_pos[a.shoulder] + p.shoulder * (s0 - rig.bind_pos[a.shoulder]) : s0;
+  seg.elbow = seg.shoulder + p.upper * (rig.bind_pos[a.lower] - s0);
+  seg.wrist = seg.elbow + p.lower * (rig.bind_pos[a.hand] - rig.bind_pos[a.lower]);
+  return seg;
+}
+
+namespace {
+
+// Swivel candidates (radians, 0 elbow down, + elbow out): from the elbow in front of the body
+// (-92 deg: shoulder internal rotation; for a hand near the shoulder the "out" side of the circle
+// is behind the body, so "in" is where the elbow comes forward) to the elbow raised out to the
+// side (115 deg: a hand at the chin or the opposite cheek with the upper arm clear of the chest).
+// The body cost decides among them when the elbow would enter the trunk.
+constexpr float kSwivelLo = -1.6f, kSwivelStep = 0.2f;
+constexpr int kSwivelCandidates = 19;
+// Signers keep the elbow beside the body, not behind it: an elbow swung behind the body (the
+// arm wrapped round the head to realise an orientation the wrist cannot) is shoulder extension
+// with horizontal abduction near its limit. Beyond 12 cm behind the shoulder joint (a hand held at
+// the chest lets the elbow hang a little behind the body's mid-plane), each upper arm
+// length costs as much as 1 rad of orientation error, so the hand gives way first.
+float elbow_behind_cost(const Rig& rig, Side side, const ArmPose& p) {
+  const ArmRig& a = rig.arms[side];
+  ArmSegments seg = arm_segments(rig, side, p);
+  float behind = -glm::dot(seg.elbow - seg.shoulder, rig.forward) - 0.12f;
+  return behind > 0.0f ? 3.0f * behind / a.upper_len_m : 0.0f;
+}
+
+}  // namespace
+
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
-  if (!t.auto_swivel) return solve_at(rig, side, t, t.swivel_rad).pose;
+  auto clearance = [&](ArmPose* p) {
+    if (!t.body) return 0.0f;
+    p->trunk_depth_m = arm_trunk_depth(*t.body, side, arm_segments(rig, side, *p), t.hand_contact,
+                                       &p->trunk_push_dir);
+    return arm_trunk_cost(p->trunk_depth_m);
+  };
+  if (!t.auto_swivel) {
+    ArmPose p = solve_at(rig, side, t, t.swivel_rad).pose;
+    if (t.body) p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
+    return p;
+  }
   // Comfort heuristic: the elbow hangs down and a little out (25 deg), rising outwards for
   // targets above the shoulder; among candidates, the one that best realises the requested
-  // orientation (wrist within limits) and reaches, close to that preference, wins.
+  // orientation (wrist within limits), reaches and keeps the arm out of the trunk, close to that
+  // preference, wins.
   const ArmRig& a = rig.arms[side];
   glm::vec3 v = t.point - rig.bind_pos[a.upper];
   float height = glm::dot(v, rig.up) / (a.upper_len_m + a.lower_len_m);
   float preferred = 0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f);
   ArmPose best;
   float best_cost = 1e30f;
-  for (int i = 0; i < 9; ++i) {
-    float swivel = -0.2f + 0.2f * static_cast<float>(i);  // -11 .. 80 degrees
+  auto consider = [&](float swivel) {
     ArmPose p = solve_at(rig, side, t, swivel).pose;
+    p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
+    // For a touch, reach beyond 5 mm is steep (300 per metre): with the trunk cost in play a
+    // swivel that misses the touch by 2 cm could otherwise win, and a touch must touch (< 1 cm).
+    // A hand held off the body keeps the old trade (a centimetre or two is within its band).
+    float steep = t.hand_contact ? 300.0f * std::max(0.0f, p.reach_error_m - 0.005f) : 0.0f;
     float cost = 3.0f * p.orientation_error_rad + 0.6f * std::fabs(swivel - preferred) +
-                 20.0f * p.reach_error_m;
+                 20.0f * p.reach_error_m + steep + p.body_cost;
     if (cost < best_cost) {
       best_cost = cost;
       best = p;
     }
+  };
+  // Coarse to fine (the per-sign time budget): every other candidate first, then the two
+  // neighbours of the best one.
+  for (int i = 0; i < kSwivelCandidates; i += 2) consider(kSwivelLo + kSwivelStep * static_cast<float>(i));
+  const float coarse = best.swivel_rad;
+  for (float d : {-kSwivelStep, kSwivelStep}) {
+    float swivel = coarse + d;
+    if (swivel > kSwivelLo - 1e-4f && swivel < kSwivelLo + kSwivelStep * (kSwivelCandidates - 1) + 1e-4f)
+      consider(swivel);
   }
   return best;
+}
+
+bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose) {
+  // Only for a real conflict: the arm deeper in the trunk than the 5 mm rule allows, or the
+  // elbow clearly behind the body (a graze of a few mm is the swivel's and the per-frame fix's
+  // business; turning the hand 15 degrees for it would cost more than it saves).
+  if (!t->body) return false;
+  const float elbow_behind = pose->body_cost - arm_trunk_cost(pose->trunk_depth_m);
+  if (pose->trunk_depth_m <= 0.005f && elbow_behind <= 0.03f) return false;
+  // Two ways to swing the wrist out about the contact point: along the deepest segment's way
+  // out of the trunk, and forward (away from the body, which also brings an elbow from behind
+  // the body to its side).
+  const glm::vec3 contact_to_wrist = -(t->hand_delta * t->contact_offset);
+  glm::vec3 axes[2];
+  int n_axes = 0;
+  for (const glm::vec3& out : {pose->trunk_push_dir, rig.forward}) {
+    glm::vec3 axis = glm::cross(contact_to_wrist, out);
+    if (glm::length(axis) > 1e-5f) axes[n_axes++] = glm::normalize(axis);
+  }
+  // Scored against the REQUESTED orientation; a pose that leaves the arm in conflict pays a
+  // flat 1.0 (a third of a radian) on top of its body cost: breaking the 5 mm rule weighs more
+  // than the last few degrees of orientation.
+  auto score = [&](const ArmPose& p) {
+    return 3.0f * rotation_angle(glm::conjugate(t->hand_delta) * p.hand) + 20.0f * p.reach_error_m +
+           (t->hand_contact ? 300.0f * std::max(0.0f, p.reach_error_m - 0.005f) : 0.0f) + p.body_cost +
+           (p.body_cost > 0.03f ? 1.0f : 0.0f);
+  };
+  ArmTarget turned = *t;
+  ArmPose best = *pose;
+  float best_score = score(*pose);
+  glm::quat best_delta = t->hand_delta;
+  // The smallest turn (15 degree steps, up to 120) that frees the arm and scores better than not
+  // turning wins outright: a clear criterion, where comparing scores alone would let near-equal
+  // alternatives flip with the compiler's rounding. Failing that, the best-scoring turn.
+  bool freed = false;
+  for (int k = 1; k <= 8 && !freed; ++k) {
+    for (int i = 0; i < n_axes && !freed; ++i) {
+      turned.hand_delta = axis_angle(axes[i], 0.26f * static_cast<float>(k)) * t->hand_delta;
+      ArmPose p = solve_arm(rig, side, turned);
+      if (p.reach_error_m > pose->reach_error_m + 0.002f) continue;  // a touch must still touch
+      float sc = score(p);
+      if (p.body_cost <= 0.03f && sc < score(*pose)) {
+        freed = true;
+      } else if (!(sc < best_score - 1e-3f)) {
+        continue;
+      }
+      best_score = sc;
+      best = p;
+      best_delta = turned.hand_delta;
+    }
+  }
+  if (best_delta == t->hand_delta) return false;
+  t->hand_delta = best_delta;
+  *pose = best;
+  return true;
 }
 
 void apply_arm(const Rig& rig, Side side, const ArmPose& p, PoseBuilder* b) {

@@ -5,11 +5,13 @@
 // deviation, each within anatomical limits; what the limits refuse stays as orientation error.
 #pragma once
 
+#include "synthesis/collision.h"
 #include "synthesis/rig.h"
 
 namespace sw::synthesis {
 
-// Anatomical limits (radians; degrees in comments) — joint limits everywhere.
+// Anatomical limits (radians; degrees in comments) — joint limits everywhere. Sources for the
+// forearm and wrist values (AAOS normal ranges, Ryu et al. 1991): docs/SYNTHESIS.md.
 struct ArmLimits {
   float elbow_flex_max = 2.62f;     // 150: a forearm cannot fold further onto the upper arm
   float twist_lo = -1.57f, twist_hi = 1.57f;  // forearm rotation +-90 from the bind's palm-down
@@ -28,6 +30,10 @@ struct ArmTarget {
   glm::quat hand_delta{1, 0, 0, 0}; // requested hand orientation (orientation.h)
   bool auto_swivel = true;          // choose the elbow swivel by the comfort heuristic
   float swivel_rad = 0.4f;          // used when !auto_swivel: 0 elbow down, + elbow out
+  // With a body model, the swivel choice also keeps the upper arm and forearm out of the trunk
+  // (collision.h arm_trunk_depth); hand_contact: the hand touches the body on purpose.
+  const BodyModel* body = nullptr;
+  bool hand_contact = false;
 };
 
 struct ArmPose {
@@ -37,9 +43,30 @@ struct ArmPose {
   float orientation_error_rad = 0.0f;// angle between requested and achieved hand rotation
   float elbow_flex_rad = 0.0f, twist_rad = 0.0f, wrist_flex_rad = 0.0f, wrist_dev_rad = 0.0f;
   float clavicle_elevation_rad = 0.0f, clavicle_protraction_rad = 0.0f;
+  float trunk_depth_m = 0.0f;        // arm in the trunk (only when the target had a body model)
+  glm::vec3 trunk_push_dir{0.0f};    // the way out for the deepest arm segment
+  float body_cost = 0.0f;            // what the body costs this pose (trunk depth, elbow behind)
 };
 
+// Joint positions of a solved arm (shoulder joint, elbow, wrist), the trunk in its bind pose.
+ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& pose);
+
+// Cost of an arm's depth in the trunk, in the units of the swivel choice (3 per radian of
+// orientation error): 60 per metre beyond a 2 mm tolerance, so 5 cm weighs as much as 1 rad of
+// orientation error and a swivel that keeps the arm out of the body wins over a more accurate
+// wrist (the 5 mm rule is a hard rule, the orientation a 10 degree acceptance).
+inline float arm_trunk_cost(float depth_m) { return 60.0f * (depth_m > 0.002f ? depth_m - 0.002f : 0.0f); }
+
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& target);
+
+// When even the best swivel leaves the arm in the trunk or the elbow behind the body (a fingertip
+// touching the chest or forehead with the fingers pointing into it puts the wrist inside), a
+// signer turns the hand about its contact point until the arm is free: the smallest turn
+// (15..120 degrees, swinging the wrist out of the trunk or forward) that frees the arm and
+// scores better than not turning (orientation error against the REQUESTED orientation, reach,
+// body cost), else the best-scoring turn if it beats not turning. Returns true (t->hand_delta and *pose updated) when a
+// turn won. The orientation error it costs is the price of the 5 mm rule. Needs t->body.
+bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose);
 void apply_arm(const Rig& rig, Side side, const ArmPose& pose, PoseBuilder* builder);
 
 }  // namespace sw::synthesis

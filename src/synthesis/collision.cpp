@@ -15,6 +15,46 @@ float segment_distance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& 
   return glm::length(p - (a + t * ab));
 }
 
+float segment_segment_distance(const glm::vec3& p1, const glm::vec3& q1, const glm::vec3& p2,
+                               const glm::vec3& q2, glm::vec3* on1, glm::vec3* on2) {
+  // Minimise |(p1 + s d1) - (p2 + t d2)| over s, t in [0, 1]: the unconstrained optimum of s
+  // clamped, t from it, and s recomputed whenever t had to be clamped (the distance is convex,
+  // so the clamped-then-reprojected pair is the constrained minimum).
+  const glm::vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  constexpr float kTiny = 1e-12f;
+  auto clamp01 = [](float v) { return std::min(1.0f, std::max(0.0f, v)); };
+  float s = 0.0f, t = 0.0f;
+  if (a <= kTiny && e <= kTiny) {
+    s = t = 0.0f;
+  } else if (a <= kTiny) {
+    t = clamp01(f / e);
+  } else {
+    const float c = glm::dot(d1, r);
+    if (e <= kTiny) {
+      s = clamp01(-c / a);
+    } else {
+      const float b = glm::dot(d1, d2);
+      const float denom = a * e - b * b;
+      // Parallel segments (denom ~ 0): any s gives the same line distance; s = 0 and the
+      // clamping below find the closest pair of the overlapping parts.
+      s = denom > 1e-7f * a * e ? clamp01((b * f - c * e) / denom) : 0.0f;
+      t = (b * s + f) / e;
+      if (t < 0.0f) {
+        t = 0.0f;
+        s = clamp01(-c / a);
+      } else if (t > 1.0f) {
+        t = 1.0f;
+        s = clamp01((b - c) / a);
+      }
+    }
+  }
+  const glm::vec3 c1 = p1 + s * d1, c2 = p2 + t * d2;
+  if (on1) *on1 = c1;
+  if (on2) *on2 = c2;
+  return glm::length(c1 - c2);
+}
+
 static glm::vec3 closest_on_segment(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
   glm::vec3 ab = b - a;
   float len2 = glm::dot(ab, ab);
@@ -70,6 +110,18 @@ BodyModel build_body_model(const avatar::Avatar& avatar, const Rig& rig) {
   const glm::vec3 head = rig.bind_pos[rig.head];
   const int top_joint = rig.upper_chest >= 0 ? rig.upper_chest : (rig.chest >= 0 ? rig.chest : rig.spine);
 
+  for (int s = 0; s < 2; ++s) {
+    const ArmRig& a = rig.arms[s];
+    glm::vec3 sh = rig.bind_pos[a.upper], el = rig.bind_pos[a.lower], wr = rig.bind_pos[a.hand];
+    float ur = percentile_radius(skin_of(avatar, {a.upper}), sh, el, 0.6f, 0.13f * w);
+    float fr = percentile_radius(skin_of(avatar, {a.lower}), el, wr, 0.6f, 0.10f * w);
+    body.upper_arm[s] = Capsule{s == kLeft ? "left upper arm" : "right upper arm", a.upper, sh, el, ur};
+    body.forearm[s] = Capsule{s == kLeft ? "left forearm" : "right forearm", a.lower, el, wr, fr};
+    // The shoulder ball and the deltoid over it: one arm radius out from the joint centre the
+    // upper arm is still the shoulder, joined to the torso (see BodyModel).
+    body.upper_arm_skip_m[s] = ur;
+  }
+
   // Torso: two capsules side by side (a torso is wider than deep), radius = half the depth.
   std::vector<int> torso_joints = {rig.hips, rig.spine};
   if (rig.chest >= 0) torso_joints.push_back(rig.chest);
@@ -88,6 +140,14 @@ BodyModel build_body_model(const avatar::Avatar& avatar, const Rig& rig) {
   }
   float half_depth = percentile_abs(depth, 0.85f, 0.30f * w);
   float half_width = percentile_abs(width, 0.85f, 0.48f * w);
+  // The ribcage ends where the hanging upper arm begins: a torso wider than the shoulder joints'
+  // half distance minus the upper arm's radius would put a relaxed arm inside the body (the
+  // fallback proportions do, on the procedural humanoid: 3.7 cm at rest). Measured skins stay
+  // within this bound anyway (the project avatar's 85th percentile is at it).
+  float shoulder_half = 0.5f * std::fabs(glm::dot(rig.bind_pos[rig.arms[kLeft].upper] -
+                                                  rig.bind_pos[rig.arms[kRight].upper], rig.left));
+  half_width = std::min(half_width, std::max(0.05f, shoulder_half - std::max(body.upper_arm[kLeft].radius_m,
+                                                                             body.upper_arm[kRight].radius_m)));
   half_depth = std::min(half_depth, half_width);
   float lateral = std::max(0.0f, half_width - half_depth);
   glm::vec3 bottom = hips + rig.up * (0.5f * half_depth);
@@ -114,17 +174,12 @@ BodyModel build_body_model(const avatar::Avatar& avatar, const Rig& rig) {
   float head_r = percentile_radius(head_skin, head_a, head_b, 0.7f, 0.27f * w);
   body.trunk.push_back(Capsule{"head", rig.head, head_a, head_b, head_r});
 
-  for (int s = 0; s < 2; ++s) {
-    const ArmRig& a = rig.arms[s];
-    glm::vec3 sh = rig.bind_pos[a.upper], el = rig.bind_pos[a.lower], wr = rig.bind_pos[a.hand];
-    float ur = percentile_radius(skin_of(avatar, {a.upper}), sh, el, 0.6f, 0.13f * w);
-    float fr = percentile_radius(skin_of(avatar, {a.lower}), el, wr, 0.6f, 0.10f * w);
-    body.upper_arm[s] = Capsule{s == kLeft ? "left upper arm" : "right upper arm", a.upper, sh, el, ur};
-    body.forearm[s] = Capsule{s == kLeft ? "left forearm" : "right forearm", a.lower, el, wr, fr};
-  }
   const ArmRig& ra = rig.arms[kRight];
   body.hand_sphere_radius_m = ra.finger_radius_m;
   body.palm_sphere_radius_m = 0.3f * ra.palm_width_m;
+  // A palm on the body puts the wrist half a palm thickness off the skin; the forearm's last
+  // stretch (a forearm radius plus a palm's width) then lies along the same skin.
+  body.forearm_contact_skip_m = std::max(body.forearm[kLeft].radius_m, body.forearm[kRight].radius_m) + ra.palm_width_m;
   return body;
 }
 
@@ -201,6 +256,109 @@ Penetration hand_penetration(const BodyModel& body, const PoseBuilder& pose, Sid
     }
   }
   return worst;
+}
+
+ArmSegments posed_arm(const PoseBuilder& pose, Side side) {
+  const ArmRig& a = pose.rig->arms[side];
+  return ArmSegments{pose.position(a.upper), pose.position(a.lower), pose.position(a.hand)};
+}
+
+namespace {
+
+// The deepest segment-in-capsule overlap so far; names are pointers so that the per-frame check
+// builds its message string once, not per capsule pair.
+struct Deepest {
+  float depth_m = 0.0f;
+  glm::vec3 push_dir{0.0f};
+  const std::string* segment = nullptr;
+  const std::string* into = nullptr;
+  Penetration result() const {
+    Penetration p;
+    p.depth_m = depth_m;
+    p.push_dir = push_dir;
+    if (segment && into) p.what = *segment + " in " + *into;
+    return p;
+  }
+};
+
+// Segment [a, b] with radius r against capsule [ca, cb] with radius cr: keeps the deepest.
+void segment_in_capsule(const glm::vec3& a, const glm::vec3& b, float r, const glm::vec3& ca,
+                        const glm::vec3& cb, float cr, const std::string* segment,
+                        const std::string* into, const glm::vec3& fallback_dir, Deepest* worst) {
+  glm::vec3 on_seg, on_cap;
+  float d = segment_segment_distance(a, b, ca, cb, &on_seg, &on_cap);
+  float depth = r + cr - d;
+  if (depth > worst->depth_m) {
+    worst->depth_m = depth;
+    worst->push_dir = safe_normalize(on_seg - on_cap, fallback_dir);
+    worst->segment = segment;
+    worst->into = into;
+  }
+}
+
+// The parts of an arm that count against the trunk (see BodyModel::upper_arm_skip_m).
+void checked_parts(const BodyModel& body, Side side, const ArmSegments& arm, bool hand_contact,
+                   glm::vec3* upper_a, glm::vec3* fore_b, bool* upper_checked) {
+  glm::vec3 u = arm.elbow - arm.shoulder;
+  float lu = glm::length(u);
+  float skip = body.upper_arm_skip_m[side];
+  *upper_checked = lu > skip + 1e-4f;
+  *upper_a = *upper_checked ? arm.shoulder + (skip / lu) * u : arm.elbow;
+  glm::vec3 f = arm.wrist - arm.elbow;
+  float lf = glm::length(f);
+  float fskip = hand_contact ? std::min(body.forearm_contact_skip_m, lf) : 0.0f;
+  *fore_b = lf > 1e-6f ? arm.wrist - (fskip / lf) * f : arm.wrist;
+}
+
+}  // namespace
+
+Penetration arm_penetration(const BodyModel& body, const PoseBuilder& pose, Side side,
+                            bool check_trunk, bool hand_contact, bool check_other_forearm) {
+  Deepest worst;
+  const Rig& rig = *pose.rig;
+  const ArmSegments arm = posed_arm(pose, side);
+  const Capsule& uc = body.upper_arm[side];
+  const Capsule& fc = body.forearm[side];
+  if (check_trunk) {
+    glm::vec3 upper_a, fore_b;
+    bool upper_checked = false;
+    checked_parts(body, side, arm, hand_contact, &upper_a, &fore_b, &upper_checked);
+    for (const Capsule& c : body.trunk) {
+      glm::vec3 ca = pose.attached(c.joint, c.a), cb = pose.attached(c.joint, c.b);
+      if (upper_checked)
+        segment_in_capsule(upper_a, arm.elbow, uc.radius_m, ca, cb, c.radius_m, &uc.name, &c.name,
+                           rig.forward, &worst);
+      segment_in_capsule(arm.elbow, fore_b, fc.radius_m, ca, cb, c.radius_m, &fc.name, &c.name,
+                         rig.forward, &worst);
+      if (hand_contact)
+        segment_in_capsule(fore_b, arm.wrist, 0.0f, ca, cb, c.radius_m, &fc.name, &c.name, rig.forward, &worst);
+    }
+  }
+  if (check_other_forearm) {
+    const ArmSegments o = posed_arm(pose, other(side));
+    const Capsule& oc = body.forearm[other(side)];
+    segment_in_capsule(arm.elbow, arm.wrist, fc.radius_m, o.elbow, o.wrist, oc.radius_m, &fc.name,
+                       &oc.name, rig.forward, &worst);
+  }
+  return worst.result();
+}
+
+float arm_trunk_depth(const BodyModel& body, Side side, const ArmSegments& arm, bool hand_contact,
+                      glm::vec3* push_dir) {
+  glm::vec3 upper_a, fore_b;
+  bool upper_checked = false;
+  checked_parts(body, side, arm, hand_contact, &upper_a, &fore_b, &upper_checked);
+  const float ur = body.upper_arm[side].radius_m, fr = body.forearm[side].radius_m;
+  Deepest worst;
+  for (const Capsule& c : body.trunk) {
+    if (upper_checked)
+      segment_in_capsule(upper_a, arm.elbow, ur, c.a, c.b, c.radius_m, nullptr, nullptr, glm::vec3(0.0f), &worst);
+    segment_in_capsule(arm.elbow, fore_b, fr, c.a, c.b, c.radius_m, nullptr, nullptr, glm::vec3(0.0f), &worst);
+    if (hand_contact)
+      segment_in_capsule(fore_b, arm.wrist, 0.0f, c.a, c.b, c.radius_m, nullptr, nullptr, glm::vec3(0.0f), &worst);
+  }
+  if (push_dir) *push_dir = worst.push_dir;
+  return worst.depth_m;
 }
 
 }  // namespace sw::synthesis

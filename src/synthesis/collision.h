@@ -1,10 +1,13 @@
 // Collision: the body as capsules (torso, neck, head, upper arms, forearms) and the hands as sets of
 // spheres on their joints, measured from the skeleton and — when the avatar has a skinned mesh —
 // from the mesh extents around each bone. Synthesis uses it to find frames where a hand passes
-// through the body or the other hand (seed 004: "hand into body", "hands crossing") and to route
-// such transitions through intermediate states.
+// through the body or the other hand (seed 004: "hand into body", "hands crossing"), or where an
+// arm does (an elbow or forearm inside the torso when the hand crosses the body, crossed forearms
+// through each other), to choose an elbow swivel that keeps the arm outside, and to route such
+// transitions through intermediate states.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -26,12 +29,30 @@ struct BodyModel {
   std::array<Capsule, 2> upper_arm, forearm;
   float hand_sphere_radius_m = 0.01f;    // fingers
   float palm_sphere_radius_m = 0.02f;    // palm centre
+  // Arm segments checked against the trunk: the upper arm's first `upper_arm_skip_m` (from the
+  // shoulder joint) is the shoulder itself, joined to the torso, and is not a collision; the
+  // forearm's last `forearm_contact_skip_m` (to the wrist) may rest on the body while the hand
+  // touches it (an intended contact: palm on the chest with the wrist against it) — its skin may
+  // sink in, but its axis must stay outside.
+  std::array<float, 2> upper_arm_skip_m{0.0f, 0.0f};
+  float forearm_contact_skip_m = 0.0f;
 };
 
 BodyModel build_body_model(const avatar::Avatar& avatar, const Rig& rig);
 
 // Distance from p to segment ab.
 float segment_distance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b);
+
+// Distance between segments p1q1 and p2q2 (capsule-capsule distance is this minus the radii);
+// the closest points are written to on1 / on2 when given. Degenerate segments are points.
+float segment_segment_distance(const glm::vec3& p1, const glm::vec3& q1, const glm::vec3& p2,
+                               const glm::vec3& q2, glm::vec3* on1 = nullptr, glm::vec3* on2 = nullptr);
+
+// Where one arm's capsules are: shoulder joint -> elbow (upper arm), elbow -> wrist (forearm).
+struct ArmSegments {
+  glm::vec3 shoulder{0.0f}, elbow{0.0f}, wrist{0.0f};
+};
+ArmSegments posed_arm(const PoseBuilder& pose, Side side);
 
 struct Penetration {
   float depth_m = 0.0f;                 // > 0: how far a hand sphere is inside something
@@ -43,5 +64,19 @@ struct Penetration {
 // hand/forearm, for a finalized pose.
 Penetration hand_penetration(const BodyModel& body, const PoseBuilder& pose, Side side,
                              bool check_trunk, bool check_other_hand);
+
+// Deepest penetration of `side`'s arm: upper arm and forearm capsules into the trunk capsules
+// (check_trunk), and its forearm into the other forearm (check_other_forearm). hand_contact: the
+// hand touches the body on purpose, so the forearm's wrist end (forearm_contact_skip_m) may touch
+// too. push_dir points the offending segment out.
+Penetration arm_penetration(const BodyModel& body, const PoseBuilder& pose, Side side,
+                            bool check_trunk, bool hand_contact, bool check_other_forearm);
+
+// The same arm-trunk depth for an arm given by its joint positions against the trunk in its
+// bind pose (the arm IK's key poses leave the trunk unposed): cheap enough to score every swivel
+// candidate.
+// push_dir (optional) receives the direction that takes the deepest segment out.
+float arm_trunk_depth(const BodyModel& body, Side side, const ArmSegments& arm, bool hand_contact,
+                      glm::vec3* push_dir = nullptr);
 
 }  // namespace sw::synthesis

@@ -191,6 +191,9 @@ struct Solver {
       t.point = st.target;
       t.contact_offset = st.offset;
       t.hand_delta = st.delta;
+      // The swivel keeps the arm out of the body (unless collision handling is off).
+      t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+      t.hand_contact = spec.location.kind == Location::Kind::Body && is_touch(spec.location.contact);
       ArmPose best = solve_arm(rig, plan.side, t);
       if (spec.location.kind == Location::Kind::NeutralSpace ||
           spec.location.level == BodyLevel::NeutralSpace) {
@@ -204,29 +207,46 @@ struct Solver {
         glm::vec3 base = st.target;
         t.auto_swivel = false;
         t.swivel_rad = best.swivel_rad;
-        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m;
+        // (The body cost — arm in the trunk, elbow behind the body — counts as in solve_arm.)
+        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + best.body_cost;
         bool moved = false;
         glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
-        for (float dx : {0.0f, 0.08f})
-        for (float du : up_steps)
-          for (float dz : in_steps) {
-            glm::vec3 shift = du * rig.up + dz * rig.forward + dx * outward;
-            t.point = base + shift;
-            ArmPose p = solve_arm(rig, plan.side, t);
-            float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(shift);
-            if (cost < best_cost) {
-              best_cost = cost;
-              best = p;
-              st.target = t.point;
-              moved = true;
+        auto try_ring = [&](float dx) {
+          for (float du : up_steps)
+            for (float dz : in_steps) {
+              glm::vec3 shift = du * rig.up + dz * rig.forward + dx * outward;
+              t.point = base + shift;
+              ArmPose p = solve_arm(rig, plan.side, t);
+              float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m +
+                           1.5f * glm::length(shift) + p.body_cost;
+              if (cost < best_cost) {
+                best_cost = cost;
+                best = p;
+                st.target = t.point;
+                moved = true;
+              }
             }
-          }
+        };
+        try_ring(0.0f);
+        try_ring(0.08f);
+        // Further out to the hand's own side only while the orientation still misses by more
+        // than 10 degrees (so most signs pay nothing for it). Fingers pointing out to that side
+        // with the palm down need the forearm to point that way: from a hand in front of the
+        // chest the forearm points inwards and the wrist would need 45+ degrees of ulnar
+        // deviation (limit 35), and the elbow cannot come in front of the body to turn it (the
+        // trunk is there, see solve_arm); with the hand in front of the shoulder the elbow stays
+        // at the side and the forearm points out.
+        for (float dx : {0.16f, 0.24f})
+          if (best.orientation_error_rad > 0.17f) try_ring(dx);
         if (moved) {
           t.point = st.target;
           t.auto_swivel = true;
           best = solve_arm(rig, plan.side, t);
         }
       }
+      // An orientation that puts the arm in the body gives way (arm_ik.h).
+      t.point = st.target;
+      if (turn_hand_out_of_body(rig, plan.side, &t, &best)) st.delta = t.hand_delta;
       st.swivel = best.swivel_rad;
     }
     return st;
@@ -529,78 +549,176 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     if (plans[i].exempt_trunk) exempt |= exempt_bit(plans[i].side, false);
     if (plans[i].exempt_hand) exempt |= exempt_bit(plans[i].side, true);
   }
-  std::vector<glm::quat> rest_pose_deltas;
+  // The arm itself: a swivel interpolated between two clear key poses can still take the elbow
+  // or forearm through the trunk (a movement across the body), or a forearm through the other
+  // one. Then this frame uses the nearest swivel that clears it (the hand's target, orientation
+  // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
+  auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
+                       PoseBuilder* pb, glm::quat* applied_turn) {
+    // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
+    // within its limits, and the hand must not turn into the body instead.
+    auto depth_of = [&]() {
+      return std::max(arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m,
+                      hand_penetration(ctx.body, *pb, plan.side, !plan.exempt_trunk, check_forearm).depth_m);
+    };
+    if (arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m <= 0.002f) return;
+    float depth = depth_of();
+    const float base = t->swivel_rad;
+    const float base_reach = solve_arm(rig, plan.side, *t).reach_error_m;
+    float best_depth = depth, best_swivel = base;
+    for (int k = 1; k <= 12 && best_depth > 0.002f; ++k) {
+      for (float sign : {1.0f, -1.0f}) {
+        t->swivel_rad = base + sign * 0.1f * static_cast<float>(k);
+        ArmPose ap = solve_arm(rig, plan.side, *t);
+        if (ap.reach_error_m > base_reach + 0.002f) continue;  // a touch must still touch
+        apply_arm(rig, plan.side, ap, pb);
+        pose_fingers(rig, plan.side, h.angles, ap.hand, pb);
+        pb->finalize();
+        float d = depth_of();
+        if (d < best_depth - 1e-4f) {
+          best_depth = d;
+          best_swivel = t->swivel_rad;
+        }
+        if (best_depth <= 0.002f) break;
+      }
+    }
+    t->swivel_rad = best_swivel;
+    ArmPose ap = solve_arm(rig, plan.side, *t);
+    if (best_depth > 0.002f) {
+      // No swivel clears it: the wrist itself is in the body; the hand turns out about its
+      // contact point (kept only if that helps the arm without pushing the hand in).
+      ArmTarget turned = *t;
+      ArmPose tp = ap;
+      if (turn_hand_out_of_body(rig, plan.side, &turned, &tp)) {
+        apply_arm(rig, plan.side, tp, pb);
+        pose_fingers(rig, plan.side, h.angles, tp.hand, pb);
+        pb->finalize();
+        float d = depth_of();
+        if (d < best_depth - 1e-4f) {
+          best_depth = d;
+          ap = tp;
+          *t = turned;
+          *applied_turn = turned.hand_delta * glm::conjugate(h.delta);
+        }
+      }
+    }
+    apply_arm(rig, plan.side, ap, pb);
+    pose_fingers(rig, plan.side, h.angles, ap.hand, pb);
+    pb->finalize();
+    if (best_swivel != base || t->hand_delta != h.delta) ++out->pushes;
+  };
   PoseBuilder rest(rig);
   rest.set_from_local(ctx.rest_locals.data());
-  for (int f = 0; f < out->frame_count; ++f) {
-    PoseBuilder pb(rig);
-    // Inactive hands keep the rest pose.
-    for (int i = 0; i < 2; ++i) {
-      if (plans[i].active) continue;
-      const ArmRig& a = rig.arms[plans[i].side];
-      for (int j = 0; j < J; ++j) {
-        int p = j;
-        while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
-        if (p >= 0) pb.set(j, rest.delta(j));
-      }
-    }
-    pb.finalize();
-    for (int oi = 0; oi < 2; ++oi) {
-      int i = order[oi];
-      const HandPlan& plan = plans[i];
-      if (!plan.active) continue;
-      const HandState& h = frames[f].hand[i];
-      ArmTarget t;
-      t.point = h.target;
-      if (plan.on_other_hand) {
-        PartPoint place = solver.other_hand_place(pb, plan);
-        t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
-      }
-      t.contact_offset = h.offset;
-      t.hand_delta = h.delta;
-      t.auto_swivel = false;
-      t.swivel_rad = h.swivel;
-      bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
-      for (int attempt = 0; attempt < 6; ++attempt) {
-        ArmPose ap = solve_arm(rig, plan.side, t);
-        apply_arm(rig, plan.side, ap, &pb);
-        pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
-        pb.finalize();
-        if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact))
-          out->max_reach_error_m = std::max(out->max_reach_error_m, ap.reach_error_m);
-        if (!ctx.options.avoid_collisions) break;
-        Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
-        if (pen.depth_m <= 0.002f) break;
-        // Out along the escape direction and a little forward (away from the body), which the
-        // arm can always follow.
-        t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
-        if (attempt == 0) ++out->pushes;
-      }
-    }
-    pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
-    out->exempt[f] = exempt;
-    if (f == 0) {
-      // Measured distances of the contact parts to their places (acceptance: < 1 cm with touch,
-      // 3-10 cm without).
+  // The hand turns clear_arm applied, per frame and hand (identity: none).
+  std::vector<std::array<glm::quat, 2>> turns(frames.size());
+  auto solve_frames = [&]() {
+    out->pushes = 0;
+    out->max_reach_error_m = 0.0f;
+    out->contact_distance_m.clear();
+    for (int f = 0; f < out->frame_count; ++f) {
+      PoseBuilder pb(rig);
+      // Inactive hands keep the rest pose.
       for (int i = 0; i < 2; ++i) {
+        if (plans[i].active) continue;
+        const ArmRig& a = rig.arms[plans[i].side];
+        for (int j = 0; j < J; ++j) {
+          int p = j;
+          while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
+          if (p >= 0) pb.set(j, rest.delta(j));
+        }
+      }
+      pb.finalize();
+      for (int oi = 0; oi < 2; ++oi) {
+        int i = order[oi];
         const HandPlan& plan = plans[i];
         if (!plan.active) continue;
-        HandPlace place;
-        int finger;
-        contact_part(plan.spec, &place, &finger);
-        PartPoint mine = hand_part(pb, plan.side, place, finger);
-        PartPoint anchor;
+        const HandState& h = frames[f].hand[i];
+        ArmTarget t;
+        t.point = h.target;
         if (plan.on_other_hand) {
-          anchor = solver.other_hand_place(pb, plan);
-        } else if (plan.spec.location.kind == Location::Kind::Body) {
-          if (!anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
-            continue;
-        } else {
-          continue;
+          PartPoint place = solver.other_hand_place(pb, plan);
+          t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
         }
-        out->contact_distance_m.push_back(glm::length(mine.point - anchor.point));
+        t.contact_offset = h.offset;
+        t.hand_delta = h.delta;
+        t.auto_swivel = false;
+        t.swivel_rad = h.swivel;
+        t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+        t.hand_contact = plan.exempt_trunk;
+        bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
+        for (int attempt = 0; attempt < 6; ++attempt) {
+          ArmPose ap = solve_arm(rig, plan.side, t);
+          apply_arm(rig, plan.side, ap, &pb);
+          pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
+          pb.finalize();
+          if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact))
+            out->max_reach_error_m = std::max(out->max_reach_error_m, ap.reach_error_m);
+          if (!ctx.options.avoid_collisions) break;
+          Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
+          if (pen.depth_m <= 0.002f) break;
+          // Out along the escape direction and a little forward (away from the body), which the
+          // arm can always follow.
+          t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
+          if (attempt == 0) ++out->pushes;
+        }
+        turns[f][i] = glm::quat(1, 0, 0, 0);
+        if (ctx.options.avoid_collisions) clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i]);
+      }
+      pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
+      out->exempt[f] = exempt;
+      if (f == 0) {
+        // Measured distances of the contact parts to their places (acceptance: < 1 cm with touch,
+        // 3-10 cm without).
+        for (int i = 0; i < 2; ++i) {
+          const HandPlan& plan = plans[i];
+          if (!plan.active) continue;
+          HandPlace place;
+          int finger;
+          contact_part(plan.spec, &place, &finger);
+          PartPoint mine = hand_part(pb, plan.side, place, finger);
+          PartPoint anchor;
+          if (plan.on_other_hand) {
+            anchor = solver.other_hand_place(pb, plan);
+          } else if (plan.spec.location.kind == Location::Kind::Body) {
+            if (!anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
+              continue;
+          } else {
+            continue;
+          }
+          out->contact_distance_m.push_back(glm::length(mine.point - anchor.point));
+        }
       }
     }
+  };
+  solve_frames();
+  // A turn decided frame by frame starts (and ends) at once: the hand would jump (a 60 degree
+  // turn about a fingertip moves the wrist 17 cm in one frame). Ramp every turn in and out over
+  // the 6 frames around it (the largest of the neighbours' turns, scaled down linearly with the
+  // distance), fold the ramped turns into the frames' orientations, and solve once more.
+  constexpr int kRamp = 6;
+  bool any_turn = false;
+  for (const auto& ft : turns)
+    for (const auto& q : ft) any_turn = any_turn || rotation_angle(q) > 1e-3f;
+  if (any_turn) {
+    const int n = out->frame_count;
+    for (int i = 0; i < 2; ++i) {
+      std::vector<glm::quat> ramped(n);
+      for (int f = 0; f < n; ++f) {
+        glm::quat r = turns[f][i];
+        float best = rotation_angle(r);
+        for (int g = std::max(0, f - kRamp); g <= std::min(n - 1, f + kRamp); ++g) {
+          float w = 1.0f - static_cast<float>(std::abs(f - g)) / static_cast<float>(kRamp + 1);
+          float a = w * rotation_angle(turns[g][i]);
+          if (a > best + 1e-4f) {
+            best = a;
+            r = slerp_shortest(glm::quat(1, 0, 0, 0), turns[g][i], w);
+          }
+        }
+        ramped[f] = r;
+      }
+      for (int f = 0; f < n; ++f) frames[f].hand[i].delta = ramped[f] * frames[f].hand[i].delta;
+    }
+    solve_frames();
   }
   return true;
 }

@@ -41,6 +41,14 @@ float max_penetration(const SynthContext& ctx, const glm::quat* frames, int fram
         if (what) *what = (side == kLeft ? "left hand in " : "right hand in ") + p.what;
         if (worst_frame) *worst_frame = f;
       }
+      // The arm: always against the trunk (a hand's intended touch lets only the forearm's wrist
+      // end rest on the body), its forearm against the other one unless the hands touch.
+      Penetration arm = arm_penetration(ctx.body, pb, side, true, !trunk, hands && s == 0);
+      if (arm.depth_m > worst) {
+        worst = arm.depth_m;
+        if (what) *what = arm.what;
+        if (worst_frame) *worst_frame = f;
+      }
     }
   }
   return worst;
@@ -108,6 +116,11 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     Side side = static_cast<Side>(s);
     Penetration p = hand_penetration(ctx.body, worst_pose, side, true, true);
     if (p.depth_m > 0.0f) push[s] = glm::normalize(p.push_dir + rig.forward) * (p.depth_m + 0.03f);
+    // An arm in the trunk or through the other forearm: the hand moves forward, away from the
+    // body, and the via-pose's IK (with the body model) picks a swivel that keeps the arm out.
+    Penetration arm = arm_penetration(ctx.body, worst_pose, side, true, false, true);
+    if (arm.depth_m > 0.0f && glm::length(push[s]) == 0.0f)
+      push[s] = glm::normalize(arm.push_dir + rig.forward) * (arm.depth_m + 0.03f);
   }
   TransitionPlan best = plan;
   for (int attempt = 1; attempt <= 4; ++attempt) {
@@ -122,6 +135,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       t.point = pm.position(a.hand) + static_cast<float>(attempt) * push[s];
       t.contact_offset = glm::vec3(0.0f);
       t.hand_delta = pm.delta(a.hand);
+      t.body = &ctx.body;
       PoseBuilder solved(rig);
       solved.set_from_local(mid.data());
       apply_arm(rig, side, solve_arm(rig, side, t), &solved);

@@ -6,15 +6,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
+#include "../support/matrix_compare.h"
+
 namespace sw::math {
 namespace {
 
-float max_diff(const glm::mat4& a, const glm::mat4& b) {
-  float d = 0;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) d = std::max(d, std::fabs(a[c][r] - b[c][r]));
-  return d;
-}
+using test::max_abs_diff;
 
 TEST(Transform, ToMatrixIsTranslateRotateScale) {
   Transform t;
@@ -23,7 +20,7 @@ TEST(Transform, ToMatrixIsTranslateRotateScale) {
   t.scale = {2, 0.5f, 3};
   const glm::mat4 expected = glm::translate(glm::mat4(1), t.translation) * glm::mat4_cast(t.rotation) *
                              glm::scale(glm::mat4(1), t.scale);
-  EXPECT_LT(max_diff(t.to_matrix(), expected), 1e-6f);
+  EXPECT_LT(max_abs_diff(t.to_matrix(), expected), 1e-6f);
 }
 
 TEST(Transform, DefaultIsIdentity) { EXPECT_EQ(Transform{}.to_matrix(), glm::mat4(1.0f)); }
@@ -39,14 +36,14 @@ TEST(Transform, DecomposeInvertsToMatrix) {
     const Transform back = decompose(t.to_matrix());
     EXPECT_LT(glm::length(back.translation - t.translation), 1e-5f);
     EXPECT_LT(glm::length(back.scale - t.scale), 1e-5f);
-    EXPECT_LT(max_diff(back.to_matrix(), t.to_matrix()), 1e-5f);
+    EXPECT_LT(max_abs_diff(back.to_matrix(), t.to_matrix()), 1e-5f);
   }
 }
 
 TEST(Transform, DecomposeMirrorKeepsAProperRotation) {
   const glm::mat4 mirror = glm::scale(glm::mat4(1), glm::vec3(-1, 1, 1));
   const Transform t = decompose(mirror);
-  EXPECT_LT(max_diff(t.to_matrix(), mirror), 1e-6f);
+  EXPECT_LT(max_abs_diff(t.to_matrix(), mirror), 1e-6f);
   EXPECT_NEAR(glm::length(t.rotation), 1.0f, 1e-6f);
 }
 
@@ -55,7 +52,7 @@ TEST(Transform, DecomposeZeroScaleGivesValidRotation) {
   const Transform t = decompose(flat);
   EXPECT_NEAR(glm::length(t.rotation), 1.0f, 1e-6f);
   EXPECT_EQ(t.scale.y, 0.0f);
-  EXPECT_LT(max_diff(t.to_matrix(), flat), 1e-6f);
+  EXPECT_LT(max_abs_diff(t.to_matrix(), flat), 1e-6f);
 }
 
 }  // namespace

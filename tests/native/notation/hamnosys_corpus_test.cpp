@@ -12,6 +12,7 @@
 #include "notation/hamnosys.h"
 #include "notation/parse.h"
 #include "notation/sign_spec_json.h"
+#include "corpus_tally.h"
 
 namespace sw::notation {
 namespace {
@@ -36,10 +37,7 @@ std::vector<Entry> load_corpus() {
   return out;
 }
 
-struct Tally {
-  int signs = 0, parsed = 0, clean = 0, round_trips = 0;
-  std::map<std::string, int> reasons;
-};
+using Tally = CorpusTally;
 
 // Parses one string; counts it; checks print -> parse gives the same SignSpec (as JSON).
 void run(const std::string& text, Tally* t, std::vector<std::string>* failures) {
@@ -70,15 +68,7 @@ void run(const std::string& text, Tally* t, std::vector<std::string>* failures) 
   if (same) ++t->round_trips;
 }
 
-void report(const char* what, const Tally& t) {
-  std::printf("[corpus] %s: %d signs, %d parsed (%.2f%%), %d clean (%.2f%%), %d round trips (%.2f%% of clean)\n",
-              what, t.signs, t.parsed, 100.0 * t.parsed / t.signs, t.clean, 100.0 * t.clean / t.signs,
-              t.round_trips, 100.0 * t.round_trips / std::max(1, t.clean));
-  std::vector<std::pair<int, std::string>> top;
-  for (const auto& [m, n] : t.reasons) top.emplace_back(n, m);
-  std::sort(top.rbegin(), top.rend());
-  for (std::size_t i = 0; i < top.size() && i < 8; ++i) std::printf("    %5d  %s\n", top[i].first, top[i].second.c_str());
-}
+void report(const char* what, const Tally& t) { report_corpus_tally(what, t, 8); }
 
 TEST(HamNoSysCorpus, UnicodeAndNamesParseAndRoundTrip) {
   const std::vector<Entry> corpus = load_corpus();

@@ -11,6 +11,7 @@
 #include "notation/parse.h"
 #include "notation/sigml.h"
 #include "notation/sign_spec_json.h"
+#include "corpus_tally.h"
 
 namespace sw::notation {
 namespace {
@@ -22,10 +23,7 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
-struct Tally {
-  int signs = 0, parsed = 0, clean = 0, round_trips = 0;
-  std::map<std::string, int> reasons;
-};
+using Tally = CorpusTally;
 
 Tally run(const std::string& text, bool gestural) {
   Tally t;
@@ -53,15 +51,7 @@ Tally run(const std::string& text, bool gestural) {
   return t;
 }
 
-void report(const char* what, const Tally& t) {
-  std::printf("[corpus] %s: %d signs, %d parsed (%.2f%%), %d clean (%.2f%%), %d round trips (%.2f%% of clean)\n",
-              what, t.signs, t.parsed, 100.0 * t.parsed / t.signs, t.clean, 100.0 * t.clean / t.signs,
-              t.round_trips, 100.0 * t.round_trips / std::max(1, t.clean));
-  std::vector<std::pair<int, std::string>> top;
-  for (const auto& [m, n] : t.reasons) top.emplace_back(n, m);
-  std::sort(top.rbegin(), top.rend());
-  for (std::size_t i = 0; i < top.size() && i < 6; ++i) std::printf("    %5d  %s\n", top[i].first, top[i].second.c_str());
-}
+void report(const char* what, const Tally& t) { report_corpus_tally(what, t, 6); }
 
 TEST(SiGMLCorpus, HSiGMLCollection) {
   const std::string text = read_file(std::string(SIGNWEAVE_SHARED_DIR) + "/corpus/sigml-dev/dgs-collection.sigml");

@@ -41,5 +41,19 @@ TEST(TextPosition, MalformedUtf8AdvancesOneByteAsReplacement) {
   EXPECT_EQ(code_point_label(0xE0FF), "U+E0FF");
 }
 
+TEST(TextPosition, SplitLinesKeepsEveryLineAndItsNumber) {
+  const std::string_view text = "a = 1\n\n  b = 2\nlast";
+  const std::vector<TextLine> lines = split_lines(text);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(text.substr(lines[0].start, lines[0].end - lines[0].start), "a = 1");
+  EXPECT_EQ(lines[1].start, lines[1].end);  // the empty line
+  EXPECT_EQ(text.substr(lines[3].start, lines[3].end - lines[3].start), "last");
+  for (std::size_t i = 0; i < lines.size(); ++i) EXPECT_EQ(lines[i].number, static_cast<int>(i) + 1);
+  // A final '\n' opens an empty last line; an empty text is one empty line.
+  EXPECT_EQ(split_lines("x\n").size(), 2u);
+  ASSERT_EQ(split_lines("").size(), 1u);
+  EXPECT_EQ(split_lines("")[0].end, 0u);
+}
+
 }  // namespace
 }  // namespace sw::notation

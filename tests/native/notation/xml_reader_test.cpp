@@ -66,6 +66,22 @@ TEST(XmlReader, NestingBeyondTheLimitIsAnError) {
   EXPECT_NE(d[0].message.find("deeper"), std::string::npos);
 }
 
+TEST(XmlReader, DiagnosticAtPointsAtTheStartTag) {
+  const std::string text = "<sigml>\n  <hns_sign gloss=\"x\"><hamfist/></hns_sign>\n</sigml>";
+  XmlElement root;
+  std::vector<Diagnostic> d;
+  ASSERT_TRUE(read_xml(text, &root, &d));
+  ASSERT_EQ(root.children.size(), 1u);
+  const XmlElement& sign = root.children[0];
+  Diagnostic diag = diagnostic_at(sign, "hns_sign", "expected a manual part", Severity::Warning);
+  EXPECT_EQ(diag.line, 2);
+  EXPECT_EQ(diag.column, 3);
+  EXPECT_EQ(text.substr(diag.offset, diag.length), "<hns_sign gloss=\"x\">");
+  EXPECT_EQ(diag.symbol, "hns_sign");
+  EXPECT_EQ(diag.severity, Severity::Warning);
+  EXPECT_EQ(diagnostic_at(sign, "s", "m").severity, Severity::Error);
+}
+
 TEST(XmlReader, EscapeRoundTrips) {
   const std::string value = "a<b>&\"c'";
   XmlElement root;

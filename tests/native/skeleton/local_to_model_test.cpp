@@ -6,16 +6,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "skeleton/synthetic_humanoid.h"
+#include "../support/matrix_compare.h"
 
 namespace sw::skeleton {
 namespace {
 
-float max_diff(const glm::mat4& a, const glm::mat4& b) {
-  float d = 0;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) d = std::max(d, std::fabs(a[c][r] - b[c][r]));
-  return d;
-}
+using test::max_abs_diff;
 
 // Reference: each joint's model matrix as the product of the chain from the root, computed
 // independently of the job's single pass.
@@ -54,7 +50,7 @@ TEST(LocalToModel, MatchesChainProductOnHumanoid) {
   const auto local = make_synthetic_pose(s, 7);
   const auto model = run_full(s, local);
   for (int i = 0; i < s.joint_count(); ++i) {
-    EXPECT_LT(max_diff(model[static_cast<std::size_t>(i)], chain_product(s, local, i)), 1e-5f) << s.joints[static_cast<std::size_t>(i)].name;
+    EXPECT_LT(max_abs_diff(model[static_cast<std::size_t>(i)], chain_product(s, local, i)), 1e-5f) << s.joints[static_cast<std::size_t>(i)].name;
   }
 }
 
@@ -85,7 +81,7 @@ TEST(LocalToModel, RootMatrixPlacesTheWholeBody) {
   job.root = &placement;
   ASSERT_TRUE(job.run());
   const auto unplaced = run_full(s, local);
-  for (std::size_t i = 0; i < out.size(); ++i) EXPECT_LT(max_diff(out[i], placement * unplaced[i]), 1e-5f);
+  for (std::size_t i = 0; i < out.size(); ++i) EXPECT_LT(max_abs_diff(out[i], placement * unplaced[i]), 1e-5f);
 }
 
 TEST(LocalToModel, PartialUpdateOfAHandEqualsFullUpdate) {

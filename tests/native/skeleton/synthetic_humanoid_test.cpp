@@ -17,6 +17,27 @@ TEST(SyntheticHumanoid, HasSixtyFiveValidVrmNamedJoints) {
   EXPECT_GT(s.joints[static_cast<std::size_t>(s.find("leftUpperArm"))].rest.translation.x, 0.0f);
 }
 
+TEST(SyntheticHumanoid, FingerMetacarpalsAddEightJointsAndMoveNothing) {
+  const Skeleton s65 = make_synthetic_humanoid();
+  const Skeleton s73 = make_synthetic_humanoid({/*finger_metacarpals=*/true});
+  EXPECT_EQ(s73.joint_count(), 73);
+  EXPECT_EQ(s73.validate(), "");
+  const auto parent_name = [](const Skeleton& s, const char* joint) {
+    return s.joints[static_cast<std::size_t>(s.joints[static_cast<std::size_t>(s.find(joint))].parent)].name;
+  };
+  EXPECT_EQ(parent_name(s73, "leftIndexProximal"), "leftIndexMetacarpal");
+  EXPECT_EQ(parent_name(s65, "leftIndexProximal"), "leftHand");
+  // Every joint of the 65 sits where the same joint of the 73 does (1.70 m figure, +Y up).
+  const std::vector<glm::vec3> p65 = rest_positions(s65), p73 = rest_positions(s73);
+  for (std::size_t i = 0; i < s65.joints.size(); ++i) {
+    const int j = s73.find(s65.joints[i].name);
+    ASSERT_GE(j, 0) << s65.joints[i].name;
+    EXPECT_NEAR(glm::length(p65[i] - p73[static_cast<std::size_t>(j)]), 0.0f, 1e-6f) << s65.joints[i].name;
+  }
+  EXPECT_NEAR(p65[static_cast<std::size_t>(s65.find("head"))].y, 1.56f, 1e-6f);
+  EXPECT_NEAR(p65[static_cast<std::size_t>(s65.find("leftHand"))].x, 0.72f, 1e-6f);
+}
+
 TEST(SyntheticHumanoid, PoseIsDeterministicAndSeedDependent) {
   const Skeleton s = make_synthetic_humanoid();
   const auto a = make_synthetic_pose(s, 42), b = make_synthetic_pose(s, 42), c = make_synthetic_pose(s, 43);

@@ -69,7 +69,8 @@ TEST(AvatarInstance, AnchorsRideTheirJoint) {
   avatar::Anchor anchor;
   anchor.name = "test/palm";
   anchor.joint = hand;
-  const glm::vec3 bind_point(0.75f, 1.40f, 0.0f);
+  const glm::vec3 wrist(0.72f, 1.43f, 0.0f);  // the synthetic humanoid's left wrist, bind pose
+  const glm::vec3 bind_point = wrist + glm::vec3(0.03f, -0.03f, 0.0f);
   anchor.offset = glm::vec3(a.inverse_bind[static_cast<std::size_t>(hand)] * glm::vec4(bind_point, 1.0f));
   anchor.normal = {0, -1, 0};
   a.anchors.push_back(anchor);
@@ -81,8 +82,8 @@ TEST(AvatarInstance, AnchorsRideTheirJoint) {
   instance.locals()[static_cast<std::size_t>(hand)].rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 0, 1));
   ASSERT_TRUE(instance.update());
   EXPECT_NEAR(instance.anchor_normals()[0], 1.0f, 1e-5f);
-  EXPECT_NEAR(instance.anchor_positions()[0], 0.70f + 0.02f, 1e-5f);
-  EXPECT_NEAR(instance.anchor_positions()[1], 1.42f + 0.05f, 1e-5f);
+  EXPECT_NEAR(instance.anchor_positions()[0], wrist.x + 0.03f, 1e-5f);
+  EXPECT_NEAR(instance.anchor_positions()[1], wrist.y + 0.03f, 1e-5f);
   instance.reset_pose();
   ASSERT_TRUE(instance.update());
   EXPECT_NEAR(instance.anchor_positions()[0], bind_point.x, 1e-5f);

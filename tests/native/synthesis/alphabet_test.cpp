@@ -1,13 +1,20 @@
 // The data alphabets (data/<lang>/alphabet.jsonl, ASL and Ukrainian) through the whole pipeline on
 // the project's avatar: every letter parses and synthesises, the alphabet sequence and every
 // transition between two letters stay free of penetration (> 5 mm outside intended contact), and
-// thumb-contact letters really touch.
+// thumb-contact letters really touch. The ASL starter lexicon (data/ase/lexicon.jsonl) the same
+// way for the arms: no frame puts an upper arm or forearm in the trunk, or a forearm through the
+// other, by more than 5 mm outside intended contact.
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
+#include "synthesis/collision.h"
 #include "synthesis/phrase_text.h"
+#include "synthesis/sign_motion.h"
 #include "synthesis/signing_avatar.h"
 #include "synthesis/synthesize.h"
 
@@ -81,6 +88,82 @@ TEST_P(SynthesisAlphabet, EveryTransitionBetweenTwoLettersIsFreeOfPenetration) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Data, SynthesisAlphabet, ::testing::Values("ase", "ukl"));
+
+// Deepest arm penetration over a clip (exemptions as synthesis applies them), split into arm in
+// the trunk and forearm through forearm.
+struct ArmDepths {
+  float trunk_m = 0.0f, forearms_m = 0.0f;
+  std::string trunk_what, forearms_what;
+};
+ArmDepths arm_depths(const SynthContext& ctx, const SynthesisResult& r) {
+  ArmDepths out;
+  PoseBuilder pb(ctx.rig);
+  const auto& ex = r.report.intended_contact;
+  for (int f = 0; f < r.clip.frame_count; ++f) {
+    pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * ctx.rig.joint_count]);
+    for (Side s : {kLeft, kRight}) {
+      bool contact = ex[f] & exempt_bit(s, false);
+      bool hands = !(ex[f] & exempt_bit(s, true)) && !(ex[f] & exempt_bit(other(s), true));
+      Penetration t = arm_penetration(ctx.body, pb, s, true, contact, false);
+      if (t.depth_m > out.trunk_m) {
+        out.trunk_m = t.depth_m;
+        out.trunk_what = t.what + " at frame " + std::to_string(f);
+      }
+      Penetration p = arm_penetration(ctx.body, pb, s, false, contact, hands);
+      if (p.depth_m > out.forearms_m) {
+        out.forearms_m = p.depth_m;
+        out.forearms_what = p.what + " at frame " + std::to_string(f);
+      }
+    }
+  }
+  return out;
+}
+
+TEST(SynthesisLexicon, ArmsStayOutOfTheBodyAndOfEachOther) {
+  std::string text;
+  if (!read(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
+  SigningAvatar avatar = load_signing_avatar_file(kRoot + "/models/signweave-avatar.glb");
+  if (!avatar.ok()) GTEST_SKIP() << "models/signweave-avatar.glb: " << avatar.error;
+  Synthesizer synth(avatar.avatar);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  SynthContext ctx;
+  std::string error;
+  ASSERT_TRUE(make_context(avatar.avatar, SynthesisOptions{}, &ctx, &error)) << error;
+  // Known gaps (measured on this avatar, docs/SYNTHESIS.md), each held to its own bound so they
+  // cannot grow unnoticed: the symmetric two-handed signs whose hands themselves meet or cross
+  // (their hands already broke the 5 mm rule before the arms were checked; LOVE and SAD also
+  // sink an upper arm into the torso) and GOOD (10 mm: the fingertips leave the chin with the
+  // wrist in front of the neck).
+  const std::map<std::string, float> known_trunk_mm = {
+      {"GOOD", 15.0f}, {"LOVE", 50.0f}, {"SAD", 40.0f}};
+  const std::map<std::string, float> known_forearms_mm = {
+      {"LOVE", 80.0f}, {"SAD", 40.0f}, {"DIFFERENT", 20.0f}, {"BOOK", 80.0f}};
+  std::istringstream lines(text);
+  std::string line;
+  int signs = 0;
+  float worst_trunk = 0.0f, worst_forearms = 0.0f;
+  while (std::getline(lines, line)) {
+    if (line.empty()) continue;
+    nlohmann::json entry = nlohmann::json::parse(line);
+    const std::string gloss = entry.at("gloss").get<std::string>();
+    PhraseText t = phrase_from_text(entry.at("notation").get<std::string>(), {});
+    ASSERT_TRUE(t.ok()) << gloss;
+    SynthesisResult r = synth.phrase(t.items, SynthesisOptions{});
+    ASSERT_TRUE(r.ok()) << gloss << ": " << r.errors[0].message;
+    ++signs;
+    ArmDepths d = arm_depths(ctx, r);
+    auto kt = known_trunk_mm.find(gloss);
+    auto kf = known_forearms_mm.find(gloss);
+    EXPECT_LE(d.trunk_m * 1000.0f, kt == known_trunk_mm.end() ? 5.0f : kt->second) << gloss << ": " << d.trunk_what;
+    EXPECT_LE(d.forearms_m * 1000.0f, kf == known_forearms_mm.end() ? 5.0f : kf->second)
+        << gloss << ": " << d.forearms_what;
+    if (kt == known_trunk_mm.end()) worst_trunk = std::max(worst_trunk, d.trunk_m);
+    if (kf == known_forearms_mm.end()) worst_forearms = std::max(worst_forearms, d.forearms_m);
+  }
+  EXPECT_GE(signs, 110);
+  RecordProperty("worst_arm_trunk_mm", std::to_string(worst_trunk * 1000.0f));
+  RecordProperty("worst_forearms_mm", std::to_string(worst_forearms * 1000.0f));
+}
 
 }  // namespace
 }  // namespace sw::synthesis

@@ -78,8 +78,11 @@ const std::pair<Direction, Direction> kPairs[] = {
     {{1, 0, 0}, {0, 0, -1}},   // fingers left, palm to the body
     {{1, 1, 0}, {0, 0, 1}},    // fingers up-left, palm out
     {{0, 1, 1}, {0, -1, 1}},   // up-out, palm out/down
-    // Not listed: fingers out and to the dominant side with the palm down ({-1,0,1}/{0,-1,0})
-    // needs more ulnar deviation than the wrist has; measured 14 degrees (docs/SYNTHESIS.md).
+    // Fingers out and to the dominant side, palm down: more ulnar deviation than the wrist has
+    // (35 deg) if the forearm points where it does for a central hand; the arm IK brings the
+    // elbow in front of the body (swivel < 0, shoulder internal rotation) so the forearm points
+    // out to the side instead (was 14 degrees off before the swivel search covered it).
+    {{-1, 0, 1}, {0, -1, 0}},
     {{0, -1, 1}, {0, 0, -1}},  // down-out, palm to the body
 };
 
