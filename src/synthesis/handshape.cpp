@@ -101,17 +101,55 @@ FingerGeom finger_geom(const Rig& rig, Side side, int f) {
   return g;
 }
 
-// Rotations (relative to the hand, in the bind frame) of a finger's three bones.
+// The finger and thumb kinematics are templates on the scalar: float to pose, double inside the
+// thumb solver. Why double there: the solve's end point moves with the rounding of the chain's
+// positions (float: ~1e-8 m, amplified ~500x along the directions only the prior holds), and
+// glibc's and musl's sinf/cosf round differently, which left native and WASM 5.8e-6 rad apart —
+// inside the 1e-5 parity tolerance, but with little room. In double the difference is ~1e-13.
+template <typename T> using Vec3 = glm::vec<3, T, glm::defaultp>;
+template <typename T> using Quat = glm::qua<T, glm::defaultp>;
+
+// rig.h's axis_angle, safe_normalize and frame_to_frame for any scalar (same formulas).
+template <typename T>
+Quat<T> axis_angle_t(const Vec3<T>& unit_axis, T angle_rad) {
+  T h = T(0.5) * angle_rad, s = std::sin(h);
+  return Quat<T>(std::cos(h), unit_axis.x * s, unit_axis.y * s, unit_axis.z * s);
+}
+template <typename T>
+Vec3<T> safe_normalize_t(const Vec3<T>& v, const Vec3<T>& fallback) {
+  T len = glm::length(v);
+  return len > T(1e-6) ? v / len : fallback;
+}
+template <typename T>
+Quat<T> frame_to_frame_t(const Vec3<T>& a0, const Vec3<T>& b0, const Vec3<T>& a1, const Vec3<T>& b1) {
+  auto basis = [](const Vec3<T>& a, const Vec3<T>& b) {
+    Vec3<T> x = safe_normalize_t(a, Vec3<T>(1, 0, 0));
+    Vec3<T> helper = std::fabs(x.y) < T(0.9) ? Vec3<T>(0, 1, 0) : Vec3<T>(1, 0, 0);
+    Vec3<T> y = safe_normalize_t(b - glm::dot(b, x) * x,
+                                 safe_normalize_t(helper - glm::dot(helper, x) * x, Vec3<T>(0, 0, 1)));
+    return glm::mat<3, 3, T, glm::defaultp>(x, y, glm::cross(x, y));
+  };
+  return glm::normalize(glm::quat_cast(basis(a1, b1) * glm::transpose(basis(a0, b0))));
+}
+
+// Rotations (relative to the hand, in the bind frame) of a finger's three bones; angles are
+// mcp, pip, dip flexion and abduction.
+template <typename T>
+void finger_rotations_t(const ArmRig& a, const FingerGeom& g, const T fa[4], Quat<T> out[3]) {
+  const T mcp = fa[0], pip = fa[1], dip = fa[2], abd = fa[3];
+  Vec3<T> n(a.palm_normal);
+  Vec3<T> gdir = std::cos(abd) * Vec3<T>(a.finger_dir) + std::sin(abd) * Vec3<T>(a.radial);
+  Vec3<T> d0p = std::cos(mcp) * gdir + std::sin(mcp) * n;
+  Vec3<T> s0p = -std::sin(mcp) * gdir + std::cos(mcp) * n;
+  Vec3<T> kb(g.kb);
+  out[0] = frame_to_frame_t(Vec3<T>(g.d0), Vec3<T>(g.s0), d0p, s0p);
+  out[1] = out[0] * axis_angle_t(kb, pip - T(g.flex_bind[1]));
+  out[2] = out[1] * axis_angle_t(kb, dip - T(g.flex_bind[2]));
+}
 void finger_rotations(const Rig& rig, Side side, const FingerGeom& g, const FingerAngles& fa,
                       glm::quat out[3]) {
-  const ArmRig& a = rig.arms[side];
-  glm::vec3 n = a.palm_normal;
-  glm::vec3 gdir = std::cos(fa.abduction) * a.finger_dir + std::sin(fa.abduction) * a.radial;
-  glm::vec3 d0p = std::cos(fa.mcp_flex) * gdir + std::sin(fa.mcp_flex) * n;
-  glm::vec3 s0p = -std::sin(fa.mcp_flex) * gdir + std::cos(fa.mcp_flex) * n;
-  out[0] = frame_to_frame(g.d0, g.s0, d0p, s0p);
-  out[1] = out[0] * axis_angle(g.kb, fa.pip_flex - g.flex_bind[1]);
-  out[2] = out[1] * axis_angle(g.kb, fa.dip_flex - g.flex_bind[2]);
+  const float v[4] = {fa.mcp_flex, fa.pip_flex, fa.dip_flex, fa.abduction};
+  finger_rotations_t(rig.arms[side], g, v, out);
 }
 
 struct ThumbGeom {
@@ -156,23 +194,124 @@ ThumbGeom thumb_geom(const Rig& rig, Side side) {
   return g;
 }
 
-void thumb_rotations(const ThumbGeom& g, const glm::vec3& n, const ThumbAngles& t, glm::quat out[3]) {
-  glm::quat flex = axis_angle(g.flex_axis, t.cmc_flex);
-  glm::vec3 dir1 = flex * g.neutral_dir;
-  glm::vec3 abd_axis = safe_normalize(glm::cross(dir1, n), g.kt);
-  glm::quat cmc = axis_angle(abd_axis, t.cmc_abd) * flex * axis_angle(g.neutral_dir, g.opp_sign * t.opposition);
+// Thumb bone rotations; angles are cmc_flex, cmc_abd, opposition, mcp, ip.
+template <typename T>
+void thumb_rotations_t(const ThumbGeom& g, const Vec3<T>& n, const T t[5], Quat<T> out[3]) {
+  const Vec3<T> neutral_dir(g.neutral_dir), kt(g.kt);
+  const Quat<T> align(g.align);
+  Quat<T> flex = axis_angle_t(Vec3<T>(g.flex_axis), t[0]);
+  Vec3<T> dir1 = flex * neutral_dir;
+  Vec3<T> abd_axis = safe_normalize_t(glm::cross(dir1, n), kt);
+  Quat<T> cmc = axis_angle_t(abd_axis, t[1]) * flex * axis_angle_t(neutral_dir, T(g.opp_sign) * t[2]);
   // In the neutral frame the flexion axis is kt; carried by the align rotation back to bind space.
-  glm::quat e0 = cmc * g.align;
-  glm::vec3 kt_bind = glm::conjugate(g.align) * g.kt;
+  Quat<T> e0 = cmc * align;
+  Vec3<T> kt_bind = glm::conjugate(align) * kt;
   out[0] = e0;
-  out[1] = e0 * axis_angle(kt_bind, t.mcp_flex) * g.straighten[1];
-  out[2] = e0 * axis_angle(kt_bind, t.mcp_flex + t.ip_flex) * g.straighten[2];
+  out[1] = e0 * axis_angle_t(kt_bind, t[3]) * Quat<T>(g.straighten[1]);
+  out[2] = e0 * axis_angle_t(kt_bind, t[3] + t[4]) * Quat<T>(g.straighten[2]);
+}
+void thumb_rotations(const ThumbGeom& g, const glm::vec3& n, const ThumbAngles& t, glm::quat out[3]) {
+  const float v[5] = {t.cmc_flex, t.cmc_abd, t.opposition, t.mcp_flex, t.ip_flex};
+  thumb_rotations_t(g, n, v, out);
 }
 
 // Positions (hand-relative, hand delta identity) of a chain's points given its bone rotations.
-void chain_points(const glm::vec3 bind[4], const glm::quat rot[3], glm::vec3 out[4]) {
+template <typename T>
+void chain_points(const Vec3<T> bind[4], const Quat<T> rot[3], Vec3<T> out[4]) {
   out[0] = bind[0];
   for (int i = 0; i < 3; ++i) out[i + 1] = out[i] + rot[i] * (bind[i + 1] - bind[i]);
+}
+
+// Thumb IK (see solve_handshape). Why not a search with accept/reject steps: the solve used to
+// be a coordinate descent that halved its step when no move improved the cost by a 1e-3 margin
+// and stopped on a step tolerance. Every one of those choices is a discontinuity: the path (and
+// the local minimum it ends in) jumped when the cost moved by one rounding, and the WASM SIMD
+// build (where LLVM's SLP vectoriser compiles the inlined cost differently from the out-of-line
+// copy that scored the start) ended 0.68 rad away from native (docs/SYNTHESIS.md).
+// This solve is a fixed schedule of damped Gauss-Newton (Levenberg-Marquardt) steps with no
+// branch on a value: no accept/reject, no early stop, the joint limits applied by a projection
+// (a clamp, continuous) after each step. The result is a continuous function of the rig and the
+// shape, so a last-bit difference in any build stays a small difference (tested: a 1e-6 change
+// of the input moves the pose < 1e-4 rad). Tried and rejected: limits as a one-sided quadratic
+// penalty (an unpenalised step past a limit threw the iterates 1000 rad away) and a step-length
+// cap with it (it stalled in a local minimum 5 cm from a reachable fingertip).
+constexpr int kThumbVars = 6;
+// Pull towards the preset angles (per rad^2; for the finger curl per unit of curl). It makes the
+// minimum unique (the tip position fixes 3 of the 6 variables), conditions the flat directions
+// (opposition barely moves the tip) and keeps the pose near the configured one. J^T J is ~1e-3,
+// so the pull costs ~2% of the preset's miss (< 1 mm for a pinch).
+constexpr double kThumbPrior = 2e-5;
+// Levenberg-Marquardt damping (m^2 per rad^2) on a fixed decreasing schedule, and the iteration
+// count. The Jacobian's entries are ~0.02-0.06 m/rad (J^T J ~ 1e-3): 1e-4 damps the first
+// steps from a far preset; the damping then falls below the prior (x0.6 a step) so the last
+// steps are Gauss-Newton steps that converge along the prior's shallow valley too (with a
+// constant damping above the prior, the end point depends on where the path stopped). The
+// floor keeps the steps damped where the target is out of reach (a buried fingertip in a fist:
+// a large residual, where the Gauss-Newton model is poor).
+constexpr double kThumbDamping = 1e-4;
+constexpr double kThumbDampingDecay = 0.6;
+constexpr double kThumbDampingFloor = 1e-6;
+constexpr int kThumbIterations = 40;
+// Central-difference step for the Jacobian (rad). The solve runs in double (see Vec3<T>), but
+// the step was chosen in float, where the tip's ~1e-8 m rounding put 1e-6 m/rad of noise into
+// each difference at 1e-2 (1e-5 at 1e-3, enough to move an unreachable-target solution by 2e-4
+// rad); the truncation error (~h^2/6 = 2e-5 relative) is smooth and only biases the path.
+constexpr double kJacobianStep = 1e-2;
+
+// Solves A y = b for a symmetric positive definite A by Cholesky: no pivoting, hence no
+// data-dependent choice (A = J^T J + damping + prior is positive definite by construction).
+void solve_spd(double A[kThumbVars][kThumbVars], const double b[kThumbVars], double y[kThumbVars]) {
+  double L[kThumbVars][kThumbVars] = {};
+  for (int i = 0; i < kThumbVars; ++i)
+    for (int j = 0; j <= i; ++j) {
+      double sum = A[i][j];
+      for (int k = 0; k < j; ++k) sum -= L[i][k] * L[j][k];
+      L[i][j] = i == j ? std::sqrt(std::max(sum, 1e-24)) : sum / L[j][j];
+    }
+  double z[kThumbVars];
+  for (int i = 0; i < kThumbVars; ++i) {
+    double sum = b[i];
+    for (int k = 0; k < i; ++k) sum -= L[i][k] * z[k];
+    z[i] = sum / L[i][i];
+  }
+  for (int i = kThumbVars - 1; i >= 0; --i) {
+    double sum = z[i];
+    for (int k = i + 1; k < kThumbVars; ++k) sum -= L[k][i] * y[k];
+    y[i] = sum / L[i][i];
+  }
+}
+
+// Minimises |error(x)|^2 + prior |x - x0|^2 within the bounds; x holds the start and the result.
+// error(x) returns two 3-vectors (two points' misses; the contact solve leaves the second zero).
+using ThumbError = std::array<glm::dvec3, 2>;
+template <typename ErrorFn>
+void solve_thumb_lm(const ErrorFn& error, const double x0[kThumbVars],
+                    const FingerLimits bounds[kThumbVars], double x[kThumbVars]) {
+  double damping = kThumbDamping;
+  for (int iter = 0; iter < kThumbIterations; ++iter) {
+    ThumbError e = error(x);
+    ThumbError J[kThumbVars];
+    for (int i = 0; i < kThumbVars; ++i) {
+      // The probe may leave the bounds: the kinematics are smooth beyond them, and a one-sided
+      // difference at a bound would be a switch.
+      double saved = x[i];
+      x[i] = saved + kJacobianStep;
+      ThumbError plus = error(x);
+      x[i] = saved - kJacobianStep;
+      ThumbError minus = error(x);
+      x[i] = saved;
+      for (int k = 0; k < 2; ++k) J[i][k] = (plus[k] - minus[k]) * (0.5 / kJacobianStep);
+    }
+    double A[kThumbVars][kThumbVars], g[kThumbVars], dx[kThumbVars];
+    for (int i = 0; i < kThumbVars; ++i) {
+      for (int j = 0; j < kThumbVars; ++j) A[i][j] = glm::dot(J[i][0], J[j][0]) + glm::dot(J[i][1], J[j][1]);
+      A[i][i] += damping + kThumbPrior;
+      g[i] = -(glm::dot(J[i][0], e[0]) + glm::dot(J[i][1], e[1]) + kThumbPrior * (x[i] - x0[i]));
+    }
+    solve_spd(A, g, dx);
+    for (int i = 0; i < kThumbVars; ++i) x[i] = std::min<double>(bounds[i].hi, std::max<double>(bounds[i].lo, x[i] + dx[i]));
+    damping = std::max(kThumbDampingFloor, damping * kThumbDampingDecay);  // the schedule, not a test
+  }
 }
 
 }  // namespace
@@ -277,8 +416,91 @@ void pose_fingers(const Rig& rig, Side side, const HandAngles& angles, const glm
   for (int i = 0; i < 3; ++i) pose->set(a.fingers[0].bones[i], hand * r[i]);
 }
 
+namespace {
+
+// Thumb across (HamNoSys thumb-across modifier; ASL S, A-variants, B, E, U, V): the thumb lies
+// across the front of the curled fingers (S: over the index and middle middle phalanges) or, when
+// the fingers are straight or only hooked (B, E), across the palm. The preset angles cannot do
+// both — the front of a fist is ~4 cm palmar of the palm — and before this solve the preset put
+// the thumb tip 8.8 cm straight out of the palm. So the thumb tip is placed by the thumb IK on a
+// target computed from the posed fingers:
+//   front_k = middle of finger k's middle phalanx + palm normal x (finger + thumb radius),
+//   F = sum w_k front_k / sum w_k with w_k = the finger's knuckle flexion / 90 deg (curled ones),
+//   P = on the palm at the ring finger's line, thumb radius above the palm surface,
+//   goal = P + min(1, sum w_k) (F - P), and the thumb's IP joint one distal phalanx radial of it
+// — every weight continuous, so the pose is continuous in the shape.
+ThumbAngles solve_thumb_across(const Rig& rig, Side side, const HandAngles& angles) {
+  const ArmRig& a = rig.arms[side];
+  const HandLimits& lim = hand_limits();
+  const glm::vec3 n = a.palm_normal;
+  const float thumb_radius = 1.2f * a.finger_radius_m;  // the thumb is thicker than a finger
+  glm::vec3 front_sum(0.0f);
+  float weight_sum = 0.0f;
+  for (int f = 1; f < 5; ++f) {
+    FingerGeom fg = finger_geom(rig, side, f);
+    glm::quat fr[3];
+    finger_rotations(rig, side, fg, angles.fingers[f - 1], fr);
+    glm::vec3 fp[4];
+    chain_points(fg.p, fr, fp);
+    float w = std::min(1.0f, std::max(0.0f, angles.fingers[f - 1].mcp_flex / (90.0f * kDeg)));
+    front_sum += w * (0.5f * (fp[1] + fp[2]) + (a.finger_radius_m + thumb_radius) * n);
+    weight_sum += w;
+  }
+  const glm::vec3 centre = bind_palm_centre(rig, side);
+  const glm::vec3 ring_knuckle = rig.bind_pos[a.fingers[3].bones[0]];
+  const glm::vec3 on_palm = centre + glm::dot(ring_knuckle - centre, a.radial) * a.radial + thumb_radius * n;
+  const float eps = 1e-3f;  // keeps the mean defined (and continuous) when no finger is curled
+  const glm::vec3 front = (front_sum + eps * on_palm) / (weight_sum + eps);
+  const glm::vec3 goal = on_palm + std::min(1.0f, weight_sum) * (front - on_palm);
+
+  ThumbGeom tg = thumb_geom(rig, side);
+  glm::dvec3 thumb_rel[4];
+  for (int i = 0; i < 4; ++i) thumb_rel[i] = glm::dvec3(tg.p[i]) - glm::dvec3(tg.p[0]);
+  const glm::dvec3 goal_rel = glm::dvec3(goal) - glm::dvec3(tg.p[0]);
+  // The distal phalanx lies across the hand too (its IP joint radial of the tip): with the tip
+  // alone as the target, the thumb reached the front of the fist from inside it, its distal
+  // phalanx 13 mm deep in the middle finger.
+  // Only in front of curled fingers (weighted like the goal): on a flat palm (B, E) the thumb
+  // cannot fold that far across in the palm plane and the two targets pulled it outwards.
+  const glm::dvec3 ip_goal_rel = goal_rel + glm::length(thumb_rel[3] - thumb_rel[2]) * glm::dvec3(a.radial);
+  const double in_front = std::min(1.0f, weight_sum);
+  ThumbAngles start;
+  { ThumbAngles unused; thumb_states(notation::kThumbAcross, &unused, &start); }
+  // The sixth variable (a finger curl in the contact solve) is unused here: held at 0.
+  const double x0[kThumbVars] = {start.cmc_flex, start.cmc_abd, start.opposition, start.mcp_flex, start.ip_flex, 0.0};
+  const FingerLimits bounds[kThumbVars] = {lim.cmc_flex, lim.cmc_abd, lim.opposition, lim.thumb_mcp,
+                                           lim.thumb_ip, FingerLimits{0.0f, 0.0f}};
+  const glm::dvec3 nd(n);
+  auto error = [&](const double* v) {
+    glm::dquat tr[3];
+    thumb_rotations_t(tg, nd, v, tr);
+    glm::dvec3 tp[4];
+    chain_points(thumb_rel, tr, tp);
+    return ThumbError{tp[3] - goal_rel, in_front * (tp[2] - ip_goal_rel)};
+  };
+  double x[kThumbVars];
+  std::copy(x0, x0 + kThumbVars, x);
+  solve_thumb_lm(error, x0, bounds, x);
+  return ThumbAngles{static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2]),
+                     static_cast<float>(x[3]), static_cast<float>(x[4])};
+}
+
+}  // namespace
+
 HandAngles solve_handshape(const Rig& rig, Side side, const notation::HandShape& shape) {
   HandAngles angles = handshape_angles(shape);
+  if (shape.fingers[0].id == notation::kThumbAcross) {
+    // F^1(t) across: t blends from the state's begin (alongside) to the solved across pose.
+    const notation::FingerConfig& c = shape.fingers[0];
+    float t = c.has_t ? std::min(1.0f, std::max(0.0f, c.t)) : 1.0f;
+    ThumbAngles beg, end;
+    thumb_states(notation::kThumbAcross, &beg, &end);
+    ThumbAngles solved = solve_thumb_across(rig, side, angles);
+    angles.thumb = lerp(beg, solved, t);
+    angles.thumb.cmc_flex -= 0.35f * std::min(1.0f, std::max(0.0f, c.spread));  // as handshape_angles
+    clamp_all(&angles);
+    return angles;
+  }
   int target = thumb_contact_finger(shape);
   if (target < 0) return angles;
   const ArmRig& a = rig.arms[side];
@@ -292,49 +514,38 @@ HandAngles solve_handshape(const Rig& rig, Side side, const notation::HandShape&
   const float gap = 0.8f * a.finger_radius_m;
 
   // x = thumb cmc_flex, cmc_abd, opposition, mcp, ip, target finger curl (0 configured, 1 curled).
-  float x[6] = {angles.thumb.cmc_flex, angles.thumb.cmc_abd, angles.thumb.opposition,
-                angles.thumb.mcp_flex, angles.thumb.ip_flex, 0.0f};
-  const FingerLimits bounds[6] = {lim.cmc_flex, lim.cmc_abd, lim.opposition, lim.thumb_mcp,
-                                  lim.thumb_ip, FingerLimits{0.0f, 1.0f}};
-  auto evaluate = [&](const float* v) {
-    ThumbAngles t{v[0], v[1], v[2], v[3], v[4]};
-    FingerAngles f = lerp(configured, curled, v[5]);
-    glm::quat tr[3], fr[3];
-    thumb_rotations(tg, a.palm_normal, t, tr);
-    finger_rotations(rig, side, fg, f, fr);
-    glm::vec3 tp[4], fp[4];
-    chain_points(tg.p, tr, tp);
-    chain_points(fg.p, fr, fp);
-    glm::vec3 pad = fr[2] * fg.s0;  // palmar side of the distal phalanx
-    glm::vec3 goal = fp[3] + gap * pad;
-    glm::vec3 e = tp[3] - goal;
-    return glm::dot(e, e) + 1e-5f * v[5];  // prefer the finger as configured
-  };
-  // Coordinate descent with shrinking steps: deterministic (native == WASM), bounded work.
-  float best = evaluate(x);
-  float step = 0.25f;
-  for (int sweep = 0; sweep < 60 && step > 2e-4f; ++sweep) {
-    bool improved = false;
-    for (int i = 0; i < 6; ++i) {
-      for (float dir : {1.0f, -1.0f}) {
-        float saved = x[i];
-        float span = i == 5 ? step * 2.0f : step;
-        x[i] = std::min(bounds[i].hi, std::max(bounds[i].lo, saved + dir * span));
-        float c = evaluate(x);
-        // A step must improve by a clear margin: builds that round the last bit differently
-        // (native, WASM scalar, WASM SIMD) then take the same path to the same solution.
-        if (c < best * (1.0f - 1e-3f) - 1e-9f) {
-          best = c;
-          improved = true;
-          break;
-        }
-        x[i] = saved;
-      }
-    }
-    if (!improved) step *= 0.5f;
+  const double x0[kThumbVars] = {angles.thumb.cmc_flex, angles.thumb.cmc_abd, angles.thumb.opposition,
+                                 angles.thumb.mcp_flex, angles.thumb.ip_flex, 0.0};
+  const FingerLimits bounds[kThumbVars] = {lim.cmc_flex, lim.cmc_abd, lim.opposition, lim.thumb_mcp,
+                                             lim.thumb_ip, FingerLimits{0.0f, 1.0f}};
+  // Contact error (thumb tip minus goal), with the chains measured from the thumb base so that
+  // the metre-scale model coordinates do not cost precision in the Jacobian's differences.
+  glm::dvec3 thumb_rel[4], finger_rel[4];
+  for (int i = 0; i < 4; ++i) {
+    thumb_rel[i] = glm::dvec3(tg.p[i]) - glm::dvec3(tg.p[0]);
+    finger_rel[i] = glm::dvec3(fg.p[i]) - glm::dvec3(tg.p[0]);
   }
-  angles.thumb = ThumbAngles{x[0], x[1], x[2], x[3], x[4]};
-  angles.fingers[target - 1] = lerp(configured, curled, x[5]);
+  const glm::dvec3 nd(a.palm_normal), s0(fg.s0);
+  const double f_conf[4] = {configured.mcp_flex, configured.pip_flex, configured.dip_flex, configured.abduction};
+  const double f_curl[4] = {curled.mcp_flex, curled.pip_flex, curled.dip_flex, curled.abduction};
+  auto contact_error = [&](const double* v) {
+    double f[4];
+    for (int k = 0; k < 4; ++k) f[k] = f_conf[k] + v[5] * (f_curl[k] - f_conf[k]);  // lerp
+    glm::dquat tr[3], fr[3];
+    thumb_rotations_t(tg, nd, v, tr);
+    finger_rotations_t(a, fg, f, fr);
+    glm::dvec3 tp[4], fp[4];
+    chain_points(thumb_rel, tr, tp);
+    chain_points(finger_rel, fr, fp);
+    glm::dvec3 pad = fr[2] * s0;  // palmar side of the distal phalanx
+    return ThumbError{tp[3] - (fp[3] + double(gap) * pad), glm::dvec3(0.0)};
+  };
+  double x[kThumbVars];
+  std::copy(x0, x0 + kThumbVars, x);
+  solve_thumb_lm(contact_error, x0, bounds, x);
+  angles.thumb = ThumbAngles{static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2]),
+                             static_cast<float>(x[3]), static_cast<float>(x[4])};
+  angles.fingers[target - 1] = lerp(configured, curled, static_cast<float>(x[5]));
   clamp_all(&angles);
   return angles;
 }

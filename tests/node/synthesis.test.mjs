@@ -23,11 +23,9 @@ for (const flavour of FLAVOURS) {
     const core = await loadCore(flavour);
     const ref = core.synthAvatarReference();
 
-    // Known issue (docs/SYNTHESIS.md): the scalar build matches native to 1e-5; the SIMD build
-    // (-msimd128) takes a different discrete choice somewhere (worst difference measured 0.67 rad)
-    // — reported as a todo until found, not hidden.
-    const parityTodo = flavour === 'simd' ? 'SIMD build diverges from native (a discrete IK choice flips)' : false;
-    test('the parity phrase gives the native clip to 1e-5', { todo: parityTodo }, () => {
+    // Both flavours: the SIMD build once ended 0.68 rad from native because the thumb-contact IK
+    // took discrete accept/reject steps (docs/SYNTHESIS.md); the solve is now continuous.
+    test('the parity phrase gives the native clip to 1e-5', () => {
       assert.ok(!expected.error, expected.error);
       assert.ok(ref.id > 0);
       const clip = core.synthCompile(ref.id, expected.inputs.text, {});
