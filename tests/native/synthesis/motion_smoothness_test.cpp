@@ -136,8 +136,10 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
   // bounds so they cannot grow unnoticed; every other sign meets the human bounds above. The
   // worst (GOOD, SAD, MORNING: 45-51 cm in one frame) are not the per-frame swivel fix alone:
   // GOOD turns the hand palm up about its fingertips on the chin (its movement to the other
-  // palm is not followed), which swings the wrist behind the chin at once; SAD and MORNING
-  // flip the non-dominant elbow between two swivel solutions. docs/SYNTHESIS.md, known issues.
+  // palm is not followed), which swings the wrist behind the chin at once; MORNING flips the
+  // non-dominant elbow between two swivel solutions. (SAD, 44 cm, was its notation: both hands
+  // at the right eye, 3 cm from the centre, so the per-frame push threw one out of the other;
+  // now each hand starts in front of its own cheek.) docs/SYNTHESIS.md, known issues.
   const std::map<std::string, Bound> known = {
       {"BAD", {100, 90}},       {"BOOK", {100, 80}},       {"DAY", {190, 190}},
       {"DEAF", {130, 240}},     {"DIFFERENT", {100, 130}}, {"FAMILY", {100, 80}},
@@ -145,7 +147,7 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
       {"HOSPITAL", {100, 100}}, {"HOT", {100, 60}},        {"HOW", {100, 100}},
       {"KEY", {100, 90}},       {"LEARN", {240, 210}},     {"LOOK", {100, 100}},
       {"MEET", {100, 90}},      {"MORE", {100, 180}},      {"MORNING", {450, 630}},
-      {"OLD", {100, 70}},       {"PLEASE", {100, 90}},     {"SAD", {440, 830}},
+      {"OLD", {100, 70}},       {"PLEASE", {100, 90}},     
       {"SAME", {100, 110}},     {"SORRY", {100, 90}},      {"STUDENT", {240, 210}},
       {"TEACHER", {100, 70}},   {"TELL", {140, 150}},      {"THANK-YOU", {140, 160}}};
   std::istringstream lines(text);
