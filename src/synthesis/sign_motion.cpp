@@ -253,6 +253,55 @@ struct Solver {
   }
 };
 
+// Hands that cross at their key pose (LOVE's fists on the chest, DIFFERENT's index fingers,
+// BOOK's palms together) are written at the same place, so the two arms were solved through each
+// other (forearm through forearm by up to 74 mm). Signers lay one in front of the other: the
+// dominant hand comes forward along the body's forward axis by the measured overlap of forearms
+// or hands plus 4 mm (so they touch, 5 mm rule), with a fresh swivel, until clear (4 rounds: the
+// forearm's angle changes as the hand moves, so one step can fall short).
+void separate_crossed_hands(Solver& solver, const std::array<HandPlan, 2>& plans,
+                            std::array<HandState, 2>* key) {
+  const SynthContext& ctx = solver.ctx;
+  const Rig& rig = ctx.rig;
+  if (!ctx.options.avoid_collisions || !plans[0].active || !plans[1].active) return;
+  if (plans[0].on_other_hand || plans[1].on_other_hand || plans[0].exempt_hand) return;
+  auto target_of = [&](int i) {
+    ArmTarget t;
+    t.point = (*key)[i].target;
+    t.contact_offset = (*key)[i].offset;
+    t.hand_delta = (*key)[i].delta;
+    t.auto_swivel = false;
+    t.swivel_rad = (*key)[i].swivel;
+    t.body = &ctx.body;
+    t.hand_contact = plans[i].exempt_trunk;
+    return t;
+  };
+  for (int round = 0; round < 4; ++round) {
+    PoseBuilder pb(rig);
+    for (int i = 0; i < 2; ++i) {
+      ArmPose ap = solve_arm(rig, plans[i].side, target_of(i));
+      apply_arm(rig, plans[i].side, ap, &pb);
+      pose_fingers(rig, plans[i].side, (*key)[i].angles, ap.hand, &pb);
+      pb.finalize();
+    }
+    const Side d = plans[0].side;
+    Penetration pen = arm_penetration(ctx.body, pb, d, false, plans[0].exempt_trunk, true);
+    Penetration hands = hand_penetration(ctx.body, pb, d, false, true);
+    if (hands.depth_m > pen.depth_m) pen = hands;
+    if (pen.depth_m <= 0.003f) return;
+    // Out along the escape direction (palms together part sideways), but never back into the
+    // body: crossed forearms escape forwards or backwards, and the front is where there is room.
+    glm::vec3 dir = pen.push_dir;
+    const float back = glm::dot(dir, rig.forward);
+    if (back < 0.0f) dir -= back * rig.forward;
+    dir = glm::length(dir) < 0.3f ? rig.forward : glm::normalize(dir);
+    (*key)[0].target += (pen.depth_m + 0.004f) * dir;
+    ArmTarget t = target_of(0);
+    t.auto_swivel = true;
+    (*key)[0].swivel = solve_arm(rig, d, t).swivel_rad;
+  }
+}
+
 std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::SignSpec& sign) {
   const bool lh = ctx.options.left_handed;
   const Side dom = lh ? kLeft : kRight;
@@ -412,6 +461,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i] = solver.key_state(plans[i], plans[i].spec, &ok, nullptr);
   }
   if (errors->size() > before) return false;
+  separate_crossed_hands(solver, plans, &key);
 
   // Segments: (step, reversed, return-to-start). Repetitions per seed/HamNoSys.
   struct Segment { int step; bool reversed; bool back_to_start; };
@@ -554,7 +604,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // one. Then this frame uses the nearest swivel that clears it (the hand's target, orientation
   // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
   auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
-                       PoseBuilder* pb, glm::quat* applied_turn) {
+                       PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel) {
     // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
     // within its limits, and the hand must not turn into the body instead.
     auto depth_of = [&]() {
@@ -583,6 +633,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       }
     }
     t->swivel_rad = best_swivel;
+    *applied_swivel = best_swivel - base;
     ArmPose ap = solve_arm(rig, plan.side, *t);
     if (best_depth > 0.002f) {
       // No swivel clears it: the wrist itself is in the body; the hand turns out about its
@@ -609,13 +660,20 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   };
   PoseBuilder rest(rig);
   rest.set_from_local(ctx.rest_locals.data());
-  // The hand turns clear_arm applied, per frame and hand (identity: none).
+  // The hand turns and swivel offsets clear_arm applied, per frame and hand (identity / 0: none).
   std::vector<std::array<glm::quat, 2>> turns(frames.size());
-  auto solve_frames = [&]() {
-    out->pushes = 0;
-    out->max_reach_error_m = 0.0f;
-    out->contact_distance_m.clear();
+  std::vector<std::array<float, 2>> swivel_fixes(frames.size());
+  // `redo` (second pass): only the frames whose orientation or swivel the ramps changed are
+  // solved again; the others would come out identical (every frame is solved from scratch), and
+  // re-solving them doubled the time of every sign with one corrected frame.
+  auto solve_frames = [&](const std::vector<char>* redo) {
+    if (!redo || (*redo)[0]) {
+      out->max_reach_error_m = 0.0f;
+      out->contact_distance_m.clear();
+    }
+    if (!redo) out->pushes = 0;
     for (int f = 0; f < out->frame_count; ++f) {
+      if (redo && !(*redo)[f]) continue;
       PoseBuilder pb(rig);
       // Inactive hands keep the rest pose.
       for (int i = 0; i < 2; ++i) {
@@ -662,7 +720,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           if (attempt == 0) ++out->pushes;
         }
         turns[f][i] = glm::quat(1, 0, 0, 0);
-        if (ctx.options.avoid_collisions) clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i]);
+        swivel_fixes[f][i] = 0.0f;
+        if (ctx.options.avoid_collisions)
+          clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i]);
       }
       pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
       out->exempt[f] = exempt;
@@ -690,18 +750,49 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       }
     }
   };
-  solve_frames();
+  solve_frames(nullptr);
   // A turn decided frame by frame starts (and ends) at once: the hand would jump (a 60 degree
   // turn about a fingertip moves the wrist 17 cm in one frame). Ramp every turn in and out over
   // the 6 frames around it (the largest of the neighbours' turns, scaled down linearly with the
   // distance), fold the ramped turns into the frames' orientations, and solve once more.
+  //
+  // The swivel fix has the same defect: it holds the elbow (and, through the wrist limits, the
+  // wrist) out of the body for the frames that need it and lets go at once (GOOD: the wrist moved
+  // 17 cm in one frame). The offsets are ramped the same way but with a smoothstep envelope over
+  // kSwivelRamp frames (zero slope at both ends, so no velocity step where the ramp starts) and
+  // added to the frames' swivels before the second solve; clear_arm then finds those frames clear
+  // and leaves them alone.
   constexpr int kRamp = 6;
-  bool any_turn = false;
+  constexpr int kSwivelRamp = 8;  // 0.27 s at 30 fps: a 1.2 rad fix moves the elbow < 4 cm/frame
+  bool any_turn = false, any_swivel = false;
   for (const auto& ft : turns)
     for (const auto& q : ft) any_turn = any_turn || rotation_angle(q) > 1e-3f;
-  if (any_turn) {
+  for (const auto& fs : swivel_fixes)
+    for (float s : fs) any_swivel = any_swivel || std::abs(s) > 1e-4f;
+  std::vector<char> redo(frames.size(), 0);
+  if (any_swivel) {
     const int n = out->frame_count;
     for (int i = 0; i < 2; ++i) {
+      std::vector<float> ramped(n, 0.0f);
+      for (int f = 0; f < n; ++f) {
+        float best = 0.0f;
+        for (int g = std::max(0, f - kSwivelRamp); g <= std::min(n - 1, f + kSwivelRamp); ++g) {
+          float x = static_cast<float>(std::abs(f - g)) / static_cast<float>(kSwivelRamp + 1);
+          float w = 1.0f - x * x * (3.0f - 2.0f * x);  // smoothstep down to 0 at kSwivelRamp + 1
+          float o = w * swivel_fixes[g][i];
+          if (std::abs(o) > std::abs(best)) best = o;
+        }
+        ramped[f] = best;
+      }
+      for (int f = 0; f < n; ++f) {
+        frames[f].hand[i].swivel += ramped[f];
+        if (ramped[f] != 0.0f) redo[f] = 1;
+      }
+    }
+  }
+  if (any_turn || any_swivel) {
+    const int n = out->frame_count;
+    for (int i = 0; any_turn && i < 2; ++i) {
       std::vector<glm::quat> ramped(n);
       for (int f = 0; f < n; ++f) {
         glm::quat r = turns[f][i];
@@ -716,9 +807,12 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         }
         ramped[f] = r;
       }
-      for (int f = 0; f < n; ++f) frames[f].hand[i].delta = ramped[f] * frames[f].hand[i].delta;
+      for (int f = 0; f < n; ++f) {
+        frames[f].hand[i].delta = ramped[f] * frames[f].hand[i].delta;
+        if (rotation_angle(ramped[f]) > 0.0f) redo[f] = 1;
+      }
     }
-    solve_frames();
+    solve_frames(&redo);
   }
   return true;
 }

@@ -129,15 +129,13 @@ TEST(SynthesisLexicon, ArmsStayOutOfTheBodyAndOfEachOther) {
   SynthContext ctx;
   std::string error;
   ASSERT_TRUE(make_context(avatar.avatar, SynthesisOptions{}, &ctx, &error)) << error;
-  // Known gaps (measured on this avatar, docs/SYNTHESIS.md), each held to its own bound so they
-  // cannot grow unnoticed: the symmetric two-handed signs whose hands themselves meet or cross
-  // (their hands already broke the 5 mm rule before the arms were checked; LOVE and SAD also
-  // sink an upper arm into the torso) and GOOD (10 mm: the fingertips leave the chin with the
-  // wrist in front of the neck).
-  const std::map<std::string, float> known_trunk_mm = {
-      {"GOOD", 15.0f}, {"LOVE", 50.0f}, {"SAD", 40.0f}};
-  const std::map<std::string, float> known_forearms_mm = {
-      {"LOVE", 80.0f}, {"SAD", 40.0f}, {"DIFFERENT", 20.0f}, {"BOOK", 80.0f}};
+  // Known gap (measured on this avatar, docs/SYNTHESIS.md), held to its own bound so it cannot
+  // grow unnoticed: LOVE's crossed fists are laid one in front of the other at the key pose
+  // (sign_motion.cpp, separate_crossed_hands: forearms 74 mm through each other before, 13.9
+  // after), but the arriving transition still brushes the forearms. LOVE and SAD's upper arms,
+  // DIFFERENT's and BOOK's forearms and GOOD (10 mm before) now meet the 5 mm rule.
+  const std::map<std::string, float> known_trunk_mm = {};
+  const std::map<std::string, float> known_forearms_mm = {{"LOVE", 15.0f}};
   std::istringstream lines(text);
   std::string line;
   int signs = 0;

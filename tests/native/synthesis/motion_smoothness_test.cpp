@@ -1,0 +1,212 @@
+// Motion continuity over the real data (issue 4: continuous positions and velocities): the ASL
+// starter lexicon, both data alphabets as sequences, and every transition between two letters,
+// on the project avatar and on the reference humanoid. No tracked joint (wrists, elbows,
+// ) may move further in one frame than a signing hand ever does, and its per-frame displacement
+// may not change abruptly from one frame to the next (a correction that holds a joint and then
+// lets it go shows up as a spike in this second difference even when the jump itself is under
+// the speed bound). Tracked: wrists and elbows, which the arm IK and the collision corrections
+// move. Fingertips are not held yet: in fingerspelling transitions they reach 11-20 cm/frame
+// (handshape and wrist-twist changes, being reworked in handshape.cpp), a known gap.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "synthesis/phrase_text.h"
+#include "synthesis/reference_humanoid.h"
+#include "synthesis/rig.h"
+#include "synthesis/signing_avatar.h"
+#include "synthesis/synthesize.h"
+
+namespace sw::synthesis {
+namespace {
+
+const std::string kRoot = SIGNWEAVE_SOURCE_DIR;
+
+// Peak hand speeds in fluent signing are about 2-3 m/s (motion-capture studies of ASL/DGS
+// signers; fingerspelling is slower). At the clip's 30 fps, 3 m/s is 10 cm per frame: no wrist,
+// elbow or fingertip of a natural clip moves further than that between two frames.
+constexpr float kMaxStepM = 0.10f;
+// Hand accelerations in signing peak at a few tens of m/s^2 (a fast stop or a tap); 50 m/s^2 at
+// 30 fps is a change of 5.6 cm/frame in the per-frame displacement (a * dt^2). A joint held and
+// then released (GOOD's 17 cm jump) changes its displacement by the whole jump in one frame.
+constexpr float kMaxStepChangeM = 0.056f;
+
+bool read(const std::string& path, std::string* out) {
+  std::ifstream in(path);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  *out = ss.str();
+  return true;
+}
+
+// The sign's own motion, without the transitions from and back to the rest pose: those are
+// still too fast (fingertips at up to ~5 m/s, 16 cm/frame, raising the hand for ME on the project
+// avatar: a known gap of the rest transition's timing) and would hide the jumps this test is for.
+SynthesisOptions from_key_pose() {
+  SynthesisOptions o;
+  o.start_from_rest = false;
+  return o;
+}
+
+struct Worst {
+  float step_m = 0.0f, change_m = 0.0f;
+  std::string step_what, change_what;
+};
+
+// Tracks the wrists and elbows of both arms through a clip.
+Worst measure(const Rig& rig, const Clip& clip) {
+  Worst w;
+  PoseBuilder pb(rig);
+  const int J = rig.joint_count;
+  const char* side_names[2] = {"left", "right"};
+  std::vector<glm::vec3> prev, cur, prev_step;
+  std::vector<std::string> names;
+  for (Side s : {kLeft, kRight}) {
+    names.push_back(std::string(side_names[s]) + " wrist");
+    names.push_back(std::string(side_names[s]) + " elbow");
+  }
+  for (int f = 0; f < clip.frame_count; ++f) {
+    pb.set_from_local(&clip.rotations[static_cast<size_t>(f) * J]);
+    cur.clear();
+    for (Side s : {kLeft, kRight}) {
+      cur.push_back(pb.position(rig.arms[s].hand));
+      cur.push_back(pb.position(rig.arms[s].lower));
+    }
+    if (f > 0) {
+      std::vector<glm::vec3> step(cur.size());
+      for (size_t k = 0; k < cur.size(); ++k) {
+        step[k] = cur[k] - prev[k];
+        float d = glm::length(step[k]);
+        if (d > w.step_m) {
+          w.step_m = d;
+          w.step_what = names[k] + " at frame " + std::to_string(f);
+        }
+        if (f > 1) {
+          float c = glm::length(step[k] - prev_step[k]);
+          if (c > w.change_m) {
+            w.change_m = c;
+            w.change_what = names[k] + " at frame " + std::to_string(f);
+          }
+        }
+      }
+      prev_step = step;
+    }
+    prev = cur;
+  }
+  return w;
+}
+
+// Bounds in millimetres: per-frame step, change of the step.
+struct Bound {
+  float step_mm = kMaxStepM * 1000.0f, change_mm = kMaxStepChangeM * 1000.0f;
+};
+
+class MotionSmoothness : public ::testing::TestWithParam<const char*> {
+ protected:
+  void SetUp() override {
+    if (std::string(GetParam()) == "avatar") {
+      SigningAvatar sa = load_signing_avatar_file(kRoot + "/models/signweave-avatar.glb");
+      if (!sa.ok()) GTEST_SKIP() << "models/signweave-avatar.glb: " << sa.error;
+      avatar_ = sa.avatar;
+    } else {
+      avatar_ = make_reference_humanoid();
+    }
+    std::string error;
+    ASSERT_TRUE(build_rig(avatar_, &rig_, &error)) << error;
+  }
+  void expect_smooth(const std::string& label, const Worst& w, const Bound& b) {
+    EXPECT_LE(w.step_m * 1000.0f, b.step_mm) << label << ": " << w.step_what;
+    EXPECT_LE(w.change_m * 1000.0f, b.change_mm) << label << ": " << w.change_what;
+  }
+  avatar::Avatar avatar_;
+  Rig rig_;
+};
+
+TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
+  std::string text;
+  if (!read(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  // Known gaps, measured (the worse of the two rigs, rounded up to 10 mm) and held to their own
+  // bounds so they cannot grow unnoticed; every other sign meets the human bounds above. The
+  // worst (GOOD, SAD, MORNING: 45-51 cm in one frame) are not the per-frame swivel fix alone:
+  // GOOD turns the hand palm up about its fingertips on the chin (its movement to the other
+  // palm is not followed), which swings the wrist behind the chin at once; MORNING flips the
+  // non-dominant elbow between two swivel solutions. (SAD, 44 cm, was its notation: both hands
+  // at the right eye, 3 cm from the centre, so the per-frame push threw one out of the other;
+  // now each hand starts in front of its own cheek.) docs/SYNTHESIS.md, known issues.
+  const std::map<std::string, Bound> known = {
+      {"BAD", {100, 90}},       {"BOOK", {100, 80}},       {"DAY", {190, 190}},
+      {"DEAF", {130, 240}},     {"DIFFERENT", {100, 130}}, {"FAMILY", {100, 80}},
+      {"FINISH", {100, 100}},   {"FRIEND", {110, 150}},    {"GOOD", {510, 530}},
+      {"HOSPITAL", {100, 100}}, {"HOT", {100, 60}},        {"HOW", {100, 100}},
+      {"KEY", {100, 90}},       {"LEARN", {240, 210}},     {"LOOK", {100, 100}},
+      {"MEET", {100, 90}},      {"MORE", {100, 180}},      {"MORNING", {450, 630}},
+      {"OLD", {100, 70}},       {"PLEASE", {100, 90}},     
+      {"SAME", {100, 110}},     {"SORRY", {100, 90}},      {"STUDENT", {240, 210}},
+      {"TEACHER", {100, 70}},   {"TELL", {140, 150}},      {"THANK-YOU", {140, 160}}};
+  std::istringstream lines(text);
+  std::string line;
+  int signs = 0, smooth = 0;
+  while (std::getline(lines, line)) {
+    if (line.empty()) continue;
+    nlohmann::json entry = nlohmann::json::parse(line);
+    const std::string gloss = entry.at("gloss").get<std::string>();
+    PhraseText t = phrase_from_text(entry.at("notation").get<std::string>(), {});
+    ASSERT_TRUE(t.ok()) << gloss;
+    SynthesisResult r = synth.phrase(t.items, from_key_pose());
+    ASSERT_TRUE(r.ok()) << gloss;
+    Worst w = measure(rig_, r.clip);
+    auto k = known.find(gloss);
+    expect_smooth(gloss, w, k == known.end() ? Bound{} : k->second);
+    smooth += w.step_m <= kMaxStepM && w.change_m <= kMaxStepChangeM;
+    ++signs;
+  }
+  EXPECT_GE(signs, 110);
+  RecordProperty("signs_within_human_bounds", std::to_string(smooth) + "/" + std::to_string(signs));
+}
+
+TEST_P(MotionSmoothness, AlphabetsAndLetterPairsMoveContinuously) {
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  // Known gap: the step change reaches 69 mm (ASL) and 73 mm (Ukrainian: every pair with Й, whose
+  // arc starts abruptly) against 56; held to 75 mm.
+  const Bound letters_bound{kMaxStepM * 1000.0f, 75.0f};
+  for (const char* lang : {"ase", "ukl"}) {
+    std::string text, error;
+    if (!read(kRoot + "/data/" + lang + "/alphabet.jsonl", &text)) GTEST_SKIP() << "no data alphabet " << lang;
+    std::vector<AlphabetEntry> alphabet;
+    ASSERT_TRUE(parse_alphabet_jsonl(text, &alphabet, &error)) << error;
+    std::vector<PhraseItem> letters;
+    for (const auto& e : alphabet) {
+      PhraseText t = phrase_from_text(e.notation, {});
+      ASSERT_TRUE(t.ok()) << e.letter;
+      PhraseItem it = t.items[0];
+      it.kind = PhraseItem::Kind::Letter;
+      it.label = e.letter;
+      letters.push_back(it);
+    }
+    SynthesisResult seq = synth.phrase(letters, from_key_pose());
+    ASSERT_TRUE(seq.ok());
+    expect_smooth(std::string(lang) + " sequence", measure(rig_, seq.clip), letters_bound);
+    const SynthesisOptions opt = from_key_pose();
+    for (size_t a = 0; a < letters.size(); ++a)
+      for (size_t b = 0; b < letters.size(); ++b) {
+        if (a == b) continue;
+        SynthesisResult r = synth.phrase({letters[a], letters[b]}, opt);
+        ASSERT_TRUE(r.ok());
+        expect_smooth(std::string(lang) + " " + letters[a].label + " -> " + letters[b].label,
+                      measure(rig_, r.clip), letters_bound);
+      }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Rigs, MotionSmoothness, ::testing::Values("avatar", "reference"));
+
+}  // namespace
+}  // namespace sw::synthesis
