@@ -1,7 +1,9 @@
 // Avatar start-up cost in WebAssembly (the page's real cost): core.avatarLoad on
 // models/signweave-avatar.glb — glTF load, body anchors and the skinning instance in one call, as
 // the page makes it — per flavour. "cold" is the first call in a fresh module (what a page load
-// pays: the code has not tiered up yet); "warm" the median of later calls. Process CPU time too:
+// pays: the code has not tiered up yet); "warm" the median of later calls. `player_` figures are
+// the page's own call, Player.loadAvatar (the same load plus the rig check and the Synthesizer's
+// measurements of the avatar), in a module of its own so that it is cold too. Process CPU time too:
 // the machine is shared, and wall time then counts the neighbours. bench/avatar_load_bench.cpp is
 // the native twin with the parts split.
 import { existsSync, readFileSync } from 'node:fs';
@@ -14,12 +16,17 @@ const modelPath = path.join(ROOT, 'models', 'signweave-avatar.glb');
 const WARM_RUNS = 7;
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
-for (const flavour of FLAVOURS) {
+for (const [flavour, api] of FLAVOURS.flatMap((f) => [[f, 'core'], [f, 'player']])) {
   const core = await loadCore(flavour);
+  const player = api === 'player' ? new core.Player() : null;
   const real = existsSync(modelPath);
   const bytes = real ? new Uint8Array(readFileSync(modelPath)) : null;
-  const label = real ? 'avatar' : 'synthetic';
-  const load = () => {
+  if (player && !real) continue;  // the Player takes bytes: without the real avatar, nothing to give it
+  const label = (api === 'player' ? 'player_' : '') + (real ? 'avatar' : 'synthetic');
+  const load = player ? () => {
+    const error = player.loadAvatar(bytes);
+    if (error) throw new Error(error);
+  } : () => {
     const r = real ? core.avatarLoad(bytes) : core.avatarLoadSynthetic();
     if (r.error !== undefined) throw new Error(r.error);
     core.avatarFree(r.id);
