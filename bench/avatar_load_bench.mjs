@@ -3,7 +3,8 @@
 // the page makes it — per flavour. "cold" is the first call in a fresh module (what a page load
 // pays: the code has not tiered up yet); "warm" the median of later calls. `player_` figures are
 // the page's own call, Player.loadAvatar (the same load plus the rig check and the Synthesizer's
-// measurements of the avatar), in a module of its own so that it is cold too. Process CPU time too:
+// measurements of the avatar), in a module of its own; node shares the compiled code of one
+// flavour between its instances, so that "cold" figure is not cold (it is not the page's cost). Process CPU time too:
 // the machine is shared, and wall time then counts the neighbours. bench/avatar_load_bench.cpp is
 // the native twin with the parts split.
 import { existsSync, readFileSync } from 'node:fs';
