@@ -146,7 +146,11 @@ json rejection_to_json(const store::ImportRejection& rejection) {
 ApiRoutes::ApiRoutes(store::Store& store, Metrics& metrics, const std::string& web_dir,
                      const std::string& models_dir, ApiLimits limits)
     : store_(store), metrics_(metrics), web_(web_dir, "/"), models_(models_dir, "/models/"),
-      limits_(limits) {}
+      limits_(limits) {
+  // Compressed once here, before the server listens, so no page load pays zlib's best level.
+  web_.precompress();
+  models_.precompress();
+}
 
 void ApiRoutes::handle(const httplib::Request& req, httplib::Response& res) {
   auto start = std::chrono::steady_clock::now();
@@ -484,16 +488,20 @@ void ApiRoutes::healthz(const httplib::Request& req, httplib::Response& res) {
 
 void ApiRoutes::metrics(const httplib::Request& req, httplib::Response& res) {
   check_params(req, {});
-  char gauges[512];
+  char gauges[1024];
   std::snprintf(gauges, sizeof gauges,
                 "# HELP signweave_db_size_bytes Database file plus its WAL, in bytes.\n"
                 "# TYPE signweave_db_size_bytes gauge\n"
                 "signweave_db_size_bytes %lld\n"
                 "# HELP signweave_signs Live signs in the database.\n"
                 "# TYPE signweave_signs gauge\n"
-                "signweave_signs %lld\n",
+                "signweave_signs %lld\n"
+                "# HELP signweave_static_gzip_on_request_total Static files gzipped while a request waited.\n"
+                "# TYPE signweave_static_gzip_on_request_total counter\n"
+                "signweave_static_gzip_on_request_total %llu\n",
                 static_cast<long long>(store_.database_size_bytes()),
-                static_cast<long long>(store_.count_live_signs()));
+                static_cast<long long>(store_.count_live_signs()),
+                static_cast<unsigned long long>(web_.compressed_on_request() + models_.compressed_on_request()));
   res.status = 200;
   res.set_header("Cache-Control", "no-store");
   res.set_content(metrics_.render(gauges), "text/plain; version=0.0.4; charset=utf-8");

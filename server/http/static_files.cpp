@@ -1,6 +1,7 @@
 // Static file serving (see static_files.h).
 #include "http/static_files.h"
 
+#include <dirent.h>
 #include <sys/stat.h>
 #include <zlib.h>
 
@@ -9,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "http/json_reply.h"
 
@@ -143,6 +145,100 @@ StaticFiles::StaticFiles(std::string root, std::string mount) : mount_(std::move
   }
 }
 
+bool StaticFiles::lookup(const std::string& resolved, const struct stat& info, bool want_gzip, bool on_request,
+                         std::shared_ptr<const std::string>* body_out,
+                         std::shared_ptr<const std::string>* gzip_out) {
+  std::int64_t mtime_ns = static_cast<std::int64_t>(info.st_mtim.tv_sec) * 1000000000 + info.st_mtim.tv_nsec;
+  std::uint64_t size = static_cast<std::uint64_t>(info.st_size);
+  std::shared_ptr<const std::string> body;
+  std::shared_ptr<const std::string> gzip_body;
+  bool gzip_tried = false;
+  {
+    std::lock_guard<std::mutex> lock(cache_mutex_);
+    auto found = cache_.find(resolved);
+    if (found != cache_.end() && (found->second.size != size || found->second.mtime_ns != mtime_ns)) {
+      cached_bytes_ -= found->second.size;
+      cache_.erase(found);
+      found = cache_.end();
+    }
+    if (found != cache_.end()) {
+      body = found->second.body;
+      gzip_body = found->second.gzip_body;
+      gzip_tried = found->second.gzip_tried;
+    }
+  }
+  if (!body) {
+    std::string contents;
+    if (!read_whole_file(resolved, &contents)) return false;
+    body = std::make_shared<const std::string>(std::move(contents));
+  }
+
+  if (want_gzip && !gzip_body && !gzip_tried) {
+    // A precompressed sibling wins (made offline at the best ratio), if it is as new as the file.
+    struct stat gz_info {};
+    std::string gz_path = resolved + ".gz";
+    std::string gz_real = real_path(gz_path);
+    std::string compressed;
+    if (!gz_real.empty() && inside(root_real_, gz_real) && ::stat(gz_real.c_str(), &gz_info) == 0 &&
+        S_ISREG(gz_info.st_mode) && gz_info.st_mtim.tv_sec >= info.st_mtim.tv_sec &&
+        read_whole_file(gz_real, &compressed)) {
+      gzip_body = std::make_shared<const std::string>(std::move(compressed));
+    } else {
+      if (on_request) compressed_on_request_.fetch_add(1, std::memory_order_relaxed);
+      if (gzip_compress(*body, &compressed) && compressed.size() < body->size())
+        gzip_body = std::make_shared<const std::string>(std::move(compressed));
+    }
+  }
+  if (size <= kMaxCachedFileBytes) {
+    std::lock_guard<std::mutex> lock(cache_mutex_);
+    auto found = cache_.find(resolved);
+    if (found == cache_.end() && cached_bytes_ + size <= kMaxCacheBytes) {
+      cache_[resolved] = CachedFile{size, mtime_ns, body, gzip_body, want_gzip};
+      cached_bytes_ += size;
+    } else if (found != cache_.end() && want_gzip && !found->second.gzip_tried) {
+      found->second.gzip_body = gzip_body;
+      found->second.gzip_tried = true;
+    }
+  }
+  *body_out = std::move(body);
+  *gzip_out = std::move(gzip_body);
+  return true;
+}
+
+std::size_t StaticFiles::precompress() {
+  if (!valid()) return 0;
+  std::size_t files = 0;
+  std::vector<std::string> pending{root_real_};
+  while (!pending.empty()) {
+    std::string dir = std::move(pending.back());
+    pending.pop_back();
+    DIR* handle = ::opendir(dir.c_str());
+    if (!handle) continue;
+    std::vector<std::string> names;
+    while (const dirent* entry = ::readdir(handle)) {
+      if (entry->d_name[0] != '.') names.push_back(entry->d_name);  // dot-files are never served
+    }
+    ::closedir(handle);
+    for (const std::string& name : names) {
+      std::string resolved = real_path(dir + "/" + name);
+      struct stat info {};
+      if (resolved.empty() || !inside(root_real_, resolved) || ::stat(resolved.c_str(), &info) != 0) continue;
+      if (S_ISDIR(info.st_mode)) {
+        if (resolved == dir + "/" + name) pending.push_back(resolved);  // no symlinked loops
+        continue;
+      }
+      std::uint64_t size = static_cast<std::uint64_t>(info.st_size);
+      // Only what serve() would cache and compress: the same conditions as a request with gzip.
+      if (!S_ISREG(info.st_mode) || size < kMinGzipBytes || size > kMaxCachedFileBytes ||
+          !is_compressible(mime_type_for(resolved)) || extension_of(resolved) == "gz")
+        continue;
+      std::shared_ptr<const std::string> body, gzip_body;
+      if (lookup(resolved, info, /*want_gzip=*/true, /*on_request=*/false, &body, &gzip_body)) ++files;
+    }
+  }
+  return files;
+}
+
 void StaticFiles::serve(const httplib::Request& req, httplib::Response& res) {
   if (!valid()) {
     reply_error(res, 404, "no such file (this server has no directory for " + mount_ + ")");
@@ -198,54 +294,9 @@ void StaticFiles::serve(const httplib::Request& req, httplib::Response& res) {
 
   std::shared_ptr<const std::string> body;
   std::shared_ptr<const std::string> gzip_body;
-  bool gzip_tried = false;
-  {
-    std::lock_guard<std::mutex> lock(cache_mutex_);
-    auto found = cache_.find(resolved);
-    if (found != cache_.end() && (found->second.size != size || found->second.mtime_ns != mtime_ns)) {
-      cached_bytes_ -= found->second.size;
-      cache_.erase(found);
-      found = cache_.end();
-    }
-    if (found != cache_.end()) {
-      body = found->second.body;
-      gzip_body = found->second.gzip_body;
-      gzip_tried = found->second.gzip_tried;
-    }
-  }
-  if (!body) {
-    std::string contents;
-    if (!read_whole_file(resolved, &contents)) {
-      reply_error(res, 404, "no such file", {{"path", req.path}});
-      return;
-    }
-    body = std::make_shared<const std::string>(std::move(contents));
-  }
-
-  if (want_gzip && !gzip_body && !gzip_tried) {
-    // A precompressed sibling wins (made offline at the best ratio), if it is as new as the file.
-    struct stat gz_info {};
-    std::string gz_path = resolved + ".gz";
-    std::string gz_real = real_path(gz_path);
-    std::string compressed;
-    if (!gz_real.empty() && inside(root_real_, gz_real) && ::stat(gz_real.c_str(), &gz_info) == 0 &&
-        S_ISREG(gz_info.st_mode) && gz_info.st_mtim.tv_sec >= info.st_mtim.tv_sec &&
-        read_whole_file(gz_real, &compressed)) {
-      gzip_body = std::make_shared<const std::string>(std::move(compressed));
-    } else if (gzip_compress(*body, &compressed) && compressed.size() < body->size()) {
-      gzip_body = std::make_shared<const std::string>(std::move(compressed));
-    }
-  }
-  if (size <= kMaxCachedFileBytes) {
-    std::lock_guard<std::mutex> lock(cache_mutex_);
-    auto found = cache_.find(resolved);
-    if (found == cache_.end() && cached_bytes_ + size <= kMaxCacheBytes) {
-      cache_[resolved] = CachedFile{size, mtime_ns, body, gzip_body, want_gzip};
-      cached_bytes_ += size;
-    } else if (found != cache_.end() && want_gzip && !found->second.gzip_tried) {
-      found->second.gzip_body = gzip_body;
-      found->second.gzip_tried = true;
-    }
+  if (!lookup(resolved, info, want_gzip, /*on_request=*/true, &body, &gzip_body)) {
+    reply_error(res, 404, "no such file", {{"path", req.path}});
+    return;
   }
 
   bool send_gzip = want_gzip && gzip_body;

@@ -86,6 +86,41 @@ test('gzip when accepted: compressed in memory, or the precompressed sibling', a
   assert.equal(zlib.gunzipSync(pre.body).toString(), '// from the .gz file\n');
 });
 
+test('static files are gzipped at start-up: no request waits for zlib, repeat bytes identical', async () => {
+  const metric = async () => {
+    const text = (await rawGet('/metrics')).body.toString();
+    const line = text.split('\n').find((l) => l.startsWith('signweave_static_gzip_on_request_total '));
+    assert.ok(line, 'the counter is exported');
+    return Number(line.split(' ')[1]);
+  };
+  const before = await metric();
+  // The real avatar and a page script, never asked for with gzip before this test.
+  for (const url of ['/models/signweave-avatar.glb', '/mod.mjs']) {
+    const first = await rawGet(url, { 'Accept-Encoding': 'gzip' });
+    const second = await rawGet(url, { 'Accept-Encoding': 'gzip' });
+    assert.equal(first.status, 200, url);
+    assert.equal(first.headers['content-encoding'], 'gzip', url);
+    assert.equal(first.headers.vary, 'Accept-Encoding', url);
+    assert.ok(first.body.equals(second.body), `${url}: a second request returns identical bytes`);
+    assert.equal(first.headers.etag, second.headers.etag, url);
+    const identity = await rawGet(url, { 'Accept-Encoding': 'identity' });
+    assert.equal(identity.headers['content-encoding'], undefined, `${url}: no gzip for a client without it`);
+    assert.equal(identity.headers.vary, 'Accept-Encoding', url);
+    assert.ok(zlib.gunzipSync(first.body).equals(identity.body), `${url}: gzip decodes to the file`);
+  }
+  assert.equal(await metric(), before, 'no request compressed a file itself');
+  assert.equal(before, 0, 'every compressible file was compressed before the server listened');
+});
+
+test('a file changed after start-up is compressed again on request, not served stale', async () => {
+  const file = path.join(dir, 'web', 'changed.js');
+  const text = `// changed\n${'export const changed = 1;\n'.repeat(100)}`;
+  fs.writeFileSync(file, text);
+  const gz = await rawGet('/changed.js', { 'Accept-Encoding': 'gzip' });
+  assert.equal(gz.headers['content-encoding'], 'gzip');
+  assert.equal(zlib.gunzipSync(gz.body).toString(), text);
+});
+
 test('paths outside the web root are unreachable', async () => {
   for (const attempt of ['/../outside.txt', '/%2e%2e/outside.txt', '/gen/..%2f..%2foutside.txt',
     '/%2E%2E%2Foutside.txt', '/models/../outside.txt', '/..%5coutside.txt']) {

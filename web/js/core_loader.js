@@ -101,7 +101,15 @@ async function instantiate(flavour, baseUrl, loadScript, moduleArgs, onProgress)
   // The .wasm (download + compile) and the glue script load side by side: neither needs the other
   // until the module is instantiated.
   mark('wasm-fetch-start');
-  const compiling = extra.wasmBinary ? null : fetchAndCompileWasm(new URL(`signweave-${flavour}.wasm`, baseUrl).href, onProgress);
+  // index.html may have started this flavour's compile already (before the WebGL2 context, so the
+  // two overlap); that promise is used once, and a failure of it is this flavour's failure.
+  const early = globalThis.signweaveEarlyCore;
+  const earlyCompile = !extra.wasmBinary && early && early.flavour === flavour && early.wasm && baseUrl === early.baseUrl
+    ? early.wasm : null;
+  if (earlyCompile) early.wasm = null;
+  const compiling = extra.wasmBinary ? null
+    : earlyCompile ? earlyCompile.then((compiled) => { onProgress(1); return compiled; })
+      : fetchAndCompileWasm(new URL(`signweave-${flavour}.wasm`, baseUrl).href, onProgress);
   compiling?.catch(() => {});  // a failure is reported by the await below, not as unhandled
   // Cleared rather than deleted: the glue declares it with `var`, which makes it a global that
   // cannot be deleted (a SIMD glue loaded before its .wasm failed would make delete throw).
