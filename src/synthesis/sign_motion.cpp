@@ -499,6 +499,21 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i] = solver.key_state(plans[i], plans[i].spec, &ok, nullptr);
   }
   if (errors->size() > before) return false;
+  // A hand placed on the other hand had the default swivel (key_state cannot know where that
+  // place is): MORNING's left hand in the crook of the right elbow was held with its elbow down
+  // into the body and the per-frame clearing flipped it between two swivels (45 cm in a frame).
+  // Its key swivel is chosen, with the body model, where the place is at the other hand's key pose.
+  for (int i = 0; i < 2; ++i) {
+    const HandPlan& op = plans[1 - i];
+    if (!plans[i].active || !plans[i].on_other_hand || !op.active || op.on_other_hand) continue;
+    ArmTarget t;
+    t.point = key[i].target + other_hand_point(solver, plans[i], op, key[1 - i], plans[i].place,
+                                               plans[i].place_finger, plans[i].place_distance_m);
+    t.contact_offset = key[i].offset;
+    t.hand_delta = key[i].delta;
+    t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+    key[i].swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
+  }
   separate_crossed_hands(solver, plans, &key);
 
   // Segments: (step, reversed, return-to-start). Repetitions per seed/HamNoSys.
