@@ -679,7 +679,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             } else {
               h.target += movement_offset(rig, m, plans[i].move_mirror, ps, reference);
             }
-            h.delta = h.delta * wrist_motion(rig, plans[i].side, m, ps);
+            // A wrist movement (nod, swing, twist, circle) turns the hand at the wrist: the
+            // wrist stays where it is. Turning it about the contact part instead (the target is
+            // where that part goes) swung the wrist around the palm (Й's twist: the wrist's
+            // per-frame step changed by 73 mm from one frame to the next).
+            const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, ps);
+            h.target += turned * h.offset - h.delta * h.offset;
+            h.delta = turned;
             if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
           }
           ft.hand[i] = h;

@@ -174,9 +174,11 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
 TEST_P(MotionSmoothness, AlphabetsAndLetterPairsMoveContinuously) {
   Synthesizer synth(avatar_);
   ASSERT_TRUE(synth.ok()) << synth.error();
-  // Known gap: the step change reaches 69 mm (ASL) and 73 mm (Ukrainian: every pair with Й, whose
-  // arc starts abruptly) against 56; held to 75 mm.
-  const Bound letters_bound{kMaxStepM * 1000.0f, 75.0f};
+  // Known gap: the step change reaches 71 mm against 56 inside Й (Ukrainian; every pair with it):
+  // its wrist twist (two turns of 0.6 rad in 0.7 s) goes past the wrist's limits and the arm
+  // solve moves the wrist to make up for it. Was 73 mm while the twist turned the hand about the
+  // palm instead of the wrist. Held to 72 mm.
+  const Bound letters_bound{kMaxStepM * 1000.0f, 72.0f};
   for (const char* lang : {"ase", "ukl"}) {
     std::string text, error;
     if (!read(kRoot + "/data/" + lang + "/alphabet.jsonl", &text)) GTEST_SKIP() << "no data alphabet " << lang;
