@@ -879,6 +879,12 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // and leaves them alone.
   constexpr int kRamp = 6;
   constexpr int kSwivelRamp = 8;  // 0.27 s at 30 fps: a 1.2 rad fix moves the elbow < 4 cm/frame
+  // The second solve can still find a frame that needs a correction (the corrections of the two
+  // hands interact: BOOK's palms together, the left elbow cleared for 3 frames, 11 cm change of
+  // step), and that one again came on at once; so the residual corrections are ramped and solved
+  // again, up to kRampRounds times (each round re-solves only the frames it changed).
+  constexpr int kRampRounds = 2;
+  for (int round = 0; round < kRampRounds; ++round) {
   bool any_turn = false, any_swivel = false;
   for (const auto& ft : turns)
     for (const auto& q : ft) any_turn = any_turn || rotation_angle(q) > 1e-3f;
@@ -954,6 +960,17 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       }
     }
     solve_frames(&redo);
+  }
+  if (!(any_turn || any_swivel || any_push)) break;
+  // Frames the round did not solve again had no correction; the ones it did now hold only the
+  // residual corrections of this solve (the ramped ones are in their targets).
+  for (int f = 0; f < out->frame_count; ++f)
+    if (!redo[f])
+      for (int i = 0; i < 2; ++i) {
+        turns[f][i] = glm::quat(1, 0, 0, 0);
+        swivel_fixes[f][i] = 0.0f;
+        push_offsets[f][i] = glm::vec3(0.0f);
+      }
   }
   return true;
 }
