@@ -302,6 +302,31 @@ void separate_crossed_hands(Solver& solver, const std::array<HandPlan, 2>& plans
   }
 }
 
+// Where a place on the other hand is (plus `distance_m` along its normal) while that hand holds
+// its key pose. Movements between the other hand and the body use it: the signs that do
+// (GOOD, LEARN, STUDENT) hold the other hand still, as a place, so its key pose stands for the
+// whole movement.
+glm::vec3 other_hand_point(Solver& solver, const HandPlan& plan, const HandPlan& other_plan,
+                           const HandState& other_key, HandPlace place, int finger, float distance_m) {
+  const Rig& rig = solver.rig;
+  PoseBuilder pb(rig);
+  ArmTarget ot;
+  ot.point = other_key.target;
+  ot.contact_offset = other_key.offset;
+  ot.hand_delta = other_key.delta;
+  ot.auto_swivel = false;
+  ot.swivel_rad = other_key.swivel;
+  ArmPose op = solve_arm(rig, other_plan.side, ot);
+  apply_arm(rig, other_plan.side, op, &pb);
+  pose_fingers(rig, other_plan.side, other_key.angles, op.hand, &pb);
+  pb.finalize();
+  HandPlan at = plan;
+  at.place = place;
+  at.place_finger = finger;
+  PartPoint p = solver.other_hand_place(pb, at);
+  return p.point + distance_m * glm::normalize(p.normal);
+}
+
 std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::SignSpec& sign) {
   const bool lh = ctx.options.left_handed;
   const Side dom = lh ? kLeft : kRight;
@@ -355,9 +380,22 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
       p.exempt_hand = true;
     }
     if (loc.kind == Location::Kind::Body && is_touch(loc.contact)) p.exempt_trunk = true;
+    // A hand that moves to touch the body (LEARN: from the left palm to the forehead) touches
+    // it as much as one placed there: the per-frame push must not hold it off the forehead.
+    for (const auto& step : p.steps)
+      for (const auto& m : step)
+        if (m.to_location && m.to_location->kind == Location::Kind::Body && is_touch(m.to_location->contact))
+          p.exempt_trunk = true;
   }
-  // Hands in contact with each other: neither counts as penetrating the other.
-  if (plans[0].on_other_hand || plans[1].on_other_hand) plans[0].exempt_hand = plans[1].exempt_hand = true;
+  // Hands in contact with each other (placed on, or moving to, the other): neither counts as
+  // penetrating the other.
+  bool to_other = false;
+  for (const auto& p : plans)
+    for (const auto& step : p.steps)
+      for (const auto& m : step)
+        to_other = to_other || (m.to_location && m.to_location->kind == Location::Kind::OtherHand);
+  if (plans[0].on_other_hand || plans[1].on_other_hand || to_other)
+    plans[0].exempt_hand = plans[1].exempt_hand = true;
   return plans;
 }
 
@@ -461,6 +499,21 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i] = solver.key_state(plans[i], plans[i].spec, &ok, nullptr);
   }
   if (errors->size() > before) return false;
+  // A hand placed on the other hand had the default swivel (key_state cannot know where that
+  // place is): MORNING's left hand in the crook of the right elbow was held with its elbow down
+  // into the body and the per-frame clearing flipped it between two swivels (45 cm in a frame).
+  // Its key swivel is chosen, with the body model, where the place is at the other hand's key pose.
+  for (int i = 0; i < 2; ++i) {
+    const HandPlan& op = plans[1 - i];
+    if (!plans[i].active || !plans[i].on_other_hand || !op.active || op.on_other_hand) continue;
+    ArmTarget t;
+    t.point = key[i].target + other_hand_point(solver, plans[i], op, key[1 - i], plans[i].place,
+                                               plans[i].place_finger, plans[i].place_distance_m);
+    t.contact_offset = key[i].offset;
+    t.hand_delta = key[i].delta;
+    t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+    key[i].swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
+  }
   separate_crossed_hands(solver, plans, &key);
 
   // Segments: (step, reversed, return-to-start). Repetitions per seed/HamNoSys.
@@ -506,6 +559,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     // Remember each played segment's start and goal (before path offsets) so a reversed one can
     // retrace it.
     std::vector<std::array<HandState, 2>> seg_start(steps), seg_goal(steps);
+    // Per hand: whether an earlier step moved it away from its written location.
+    std::array<bool, 2> relocated = {false, false};
     for (const Segment& seg : segments) {
       std::array<HandState, 2> from = state, goal = state;
       std::array<std::vector<Movement>, 2> ms;
@@ -533,7 +588,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             bool changed = false;
             if (m.to_shape) { spec.shape = *m.to_shape; changed = true; }
             if (m.to_orientation) { spec.orientation = *m.to_orientation; changed = true; }
-            if (m.to_location && m.to_location->kind != Location::Kind::OtherHand) {
+            const bool to_other_hand = m.to_location && m.to_location->kind == Location::Kind::OtherHand;
+            if (m.to_location) {
               spec.location = *m.to_location;
               changed = true;
             }
@@ -541,7 +597,54 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
               bool ok = true;
               HandState g = solver.key_state(plans[i], spec, &ok, nullptr);
               if (!ok) return false;
+              // A movement to a place on the other hand (GOOD: chin -> left palm) was not
+              // followed: the hand stayed at the chin and only turned, about its fingertips,
+              // which swung the wrist behind the chin in one frame (51 cm). Its goal is that
+              // place where the other hand holds its key pose, so the hand travels the path
+              // from its start to there (minimum-jerk, orientation slerped with it) and the arm
+              // is solved per frame along it.
+              //
+              // The reverse (LEARN: from the left palm to the forehead) had the opposite defect:
+              // a hand placed on the other hand has its target relative to that place, and the
+              // absolute forehead goal was added to the palm's position per frame (the hand
+              // aimed far past the head). The goal is made relative to the same place.
+              const HandPlan& op = plans[1 - i];
+              if (to_other_hand && !plans[i].on_other_hand && op.active && !op.on_other_hand) {
+                const Location& to = *m.to_location;
+                g.target = other_hand_point(solver, plans[i], op, key[1 - i], to.hand_place,
+                                            to.finger >= 0 ? to.finger : 1, contact_distance(to.contact, true));
+                ArmTarget t;
+                t.point = g.target;
+                t.contact_offset = g.offset;
+                t.hand_delta = g.delta;
+                t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+                g.swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
+              } else if (m.to_location && !to_other_hand && plans[i].on_other_hand && op.active) {
+                g.target -= other_hand_point(solver, plans[i], op, key[1 - i], plans[i].place,
+                                             plans[i].place_finger, plans[i].place_distance_m);
+              }
               if (!m.to_location) g.target = goal[i].target;
+              if (!m.to_location && relocated[i]) {
+                // A hand that an earlier step moved away from its written place keeps its
+                // wrist where it is while it changes shape or orientation: the written contact
+                // part belongs to the written place. Turning about that fingertip at the
+                // forehead (STUDENT: fingers turned out, palm in) put the wrist inside the
+                // head and the arm behind it (57 cm in a frame).
+                g.target = goal[i].target - goal[i].delta * goal[i].offset + g.delta * g.offset;
+              }
+              if (plans[i].on_other_hand && op.active && (m.to_location || relocated[i])) {
+                // key_state leaves a hand on the other hand at the default swivel (its place is
+                // known only per frame); a goal away from that place (STUDENT: at the forehead,
+                // turning the palm in) then pulled the elbow into the body and the per-frame
+                // clearing flipped it. The swivel is chosen where the goal is.
+                ArmTarget t;
+                t.point = g.target + other_hand_point(solver, plans[i], op, key[1 - i], plans[i].place,
+                                                      plans[i].place_finger, plans[i].place_distance_m);
+                t.contact_offset = g.offset;
+                t.hand_delta = g.delta;
+                t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+                g.swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
+              }
               goal[i].angles = g.angles;
               goal[i].delta = g.delta;
               goal[i].offset = g.offset;
@@ -550,6 +653,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             }
           }
         }
+        for (int i = 0; i < 2; ++i)
+          for (const auto& m : ms[i]) relocated[i] = relocated[i] || m.to_location.has_value();
         seg_start[seg.step] = from;
         seg_goal[seg.step] = goal;
       }
@@ -574,7 +679,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             } else {
               h.target += movement_offset(rig, m, plans[i].move_mirror, ps, reference);
             }
-            h.delta = h.delta * wrist_motion(rig, plans[i].side, m, ps);
+            // A wrist movement (nod, swing, twist, circle) turns the hand at the wrist: the
+            // wrist stays where it is. Turning it about the contact part instead (the target is
+            // where that part goes) swung the wrist around the palm (Й's twist: the wrist's
+            // per-frame step changed by 73 mm from one frame to the next).
+            const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, ps);
+            h.target += turned * h.offset - h.delta * h.offset;
+            h.delta = turned;
             if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
           }
           ft.hand[i] = h;
@@ -663,6 +774,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // The hand turns and swivel offsets clear_arm applied, per frame and hand (identity / 0: none).
   std::vector<std::array<glm::quat, 2>> turns(frames.size());
   std::vector<std::array<float, 2>> swivel_fixes(frames.size());
+  // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
+  std::vector<std::array<glm::vec3, 2>> push_offsets(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
   // `redo` (second pass): only the frames whose orientation or swivel the ramps changed are
   // solved again; the others would come out identical (every frame is solved from scratch), and
   // re-solving them doubled the time of every sign with one corrected frame.
@@ -704,6 +817,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
         t.hand_contact = plan.exempt_trunk;
         bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
+        const glm::vec3 start_point = t.point;
         for (int attempt = 0; attempt < 6; ++attempt) {
           ArmPose ap = solve_arm(rig, plan.side, t);
           apply_arm(rig, plan.side, ap, &pb);
@@ -719,6 +833,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
           if (attempt == 0) ++out->pushes;
         }
+        push_offsets[f][i] = t.point - start_point;
         turns[f][i] = glm::quat(1, 0, 0, 0);
         swivel_fixes[f][i] = 0.0f;
         if (ctx.options.avoid_collisions)
@@ -764,6 +879,12 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // and leaves them alone.
   constexpr int kRamp = 6;
   constexpr int kSwivelRamp = 8;  // 0.27 s at 30 fps: a 1.2 rad fix moves the elbow < 4 cm/frame
+  // The second solve can still find a frame that needs a correction (the corrections of the two
+  // hands interact: BOOK's palms together, the left elbow cleared for 3 frames, 11 cm change of
+  // step), and that one again came on at once; so the residual corrections are ramped and solved
+  // again, up to kRampRounds times (each round re-solves only the frames it changed).
+  constexpr int kRampRounds = 2;
+  for (int round = 0; round < kRampRounds; ++round) {
   bool any_turn = false, any_swivel = false;
   for (const auto& ft : turns)
     for (const auto& q : ft) any_turn = any_turn || rotation_angle(q) > 1e-3f;
@@ -790,7 +911,33 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       }
     }
   }
-  if (any_turn || any_swivel) {
+  // The push out of the body or the other hand is decided per frame too: it switched on and off
+  // at once (6-24 cm in one frame). Ramped like the swivel fix (smoothstep over kSwivelRamp
+  // frames, the largest weighted neighbouring push) and folded into the frames' targets, so the
+  // second solve finds those frames clear and the hand eases out and back in.
+  bool any_push = false;
+  for (const auto& fp : push_offsets)
+    for (const auto& v : fp) any_push = any_push || glm::length(v) > 1e-4f;
+  if (any_push) {
+    const int n = out->frame_count;
+    for (int i = 0; i < 2; ++i) {
+      std::vector<glm::vec3> ramped(n, glm::vec3(0.0f));
+      for (int f = 0; f < n; ++f) {
+        glm::vec3 best(0.0f);
+        for (int g = std::max(0, f - kSwivelRamp); g <= std::min(n - 1, f + kSwivelRamp); ++g) {
+          float x = static_cast<float>(std::abs(f - g)) / static_cast<float>(kSwivelRamp + 1);
+          glm::vec3 o = (1.0f - x * x * (3.0f - 2.0f * x)) * push_offsets[g][i];
+          if (glm::length(o) > glm::length(best)) best = o;
+        }
+        ramped[f] = best;
+      }
+      for (int f = 0; f < n; ++f) {
+        frames[f].hand[i].target += ramped[f];
+        if (glm::length(ramped[f]) > 0.0f) redo[f] = 1;
+      }
+    }
+  }
+  if (any_turn || any_swivel || any_push) {
     const int n = out->frame_count;
     for (int i = 0; any_turn && i < 2; ++i) {
       std::vector<glm::quat> ramped(n);
@@ -813,6 +960,17 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       }
     }
     solve_frames(&redo);
+  }
+  if (!(any_turn || any_swivel || any_push)) break;
+  // Frames the round did not solve again had no correction; the ones it did now hold only the
+  // residual corrections of this solve (the ramped ones are in their targets).
+  for (int f = 0; f < out->frame_count; ++f)
+    if (!redo[f])
+      for (int i = 0; i < 2; ++i) {
+        turns[f][i] = glm::quat(1, 0, 0, 0);
+        swivel_fixes[f][i] = 0.0f;
+        push_offsets[f][i] = glm::vec3(0.0f);
+      }
   }
   return true;
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "synthesis/hand_parts.h"
+#include "synthesis/phrase_text.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -279,6 +280,44 @@ TEST_F(SynthesisMovement, EveryMovementKindSynthesises) {
       Path p = run(with(m));
       EXPECT_GT(p.palm[kRight].size(), 3u) << k;
     }
+}
+
+}  // namespace
+}  // namespace sw::synthesis
+
+namespace sw::synthesis {
+namespace {
+
+// A movement whose target is a place on the other hand (GOOD: from the chin to the left palm)
+// was not followed: the hand stayed at the chin and only turned palm up, about its fingertips,
+// swinging the wrist behind the chin in one frame. It must travel to that place and land on it.
+TEST(SynthesisMovementToTheOtherHand, TheHandTravelsFromTheChinToTheOtherPalm) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+  PhraseText t = phrase_from_text(
+      "R(H(flat), E(u), P(i), Loc(chin, centre, touch), C(tip, 2), Par(M(to, Loc(hand, palm, touch)), "
+      "M(replace, E(o), P(u)))) L(H(flat), E(o), P(u), Loc(neutral, centre))", {});
+  ASSERT_TRUE(t.ok());
+  SynthesisResult r = synthesize_sign(t.items[0].sign, av);
+  ASSERT_TRUE(r.ok()) << r.errors[0].message;
+  int a = -1, b = -1;
+  for (const auto& seg : r.clip.segments)
+    if (seg.kind == ClipSegment::Kind::Sign) {
+      a = static_cast<int>(std::lround(seg.start_s * r.clip.fps));
+      b = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+    }
+  ASSERT_GE(a, 0);
+  PoseBuilder start = frame_pose(rig, r.clip, a), end = frame_pose(rig, r.clip, std::min(b, r.clip.frame_count - 1));
+  // The middle fingertip (the contact part) starts far from the left palm and ends on it.
+  auto gap = [&](const PoseBuilder& pb) {
+    return glm::length(pb.tip(kRight, 2) - hand_part(pb, kLeft, notation::HandPlace::Palm, 1).point);
+  };
+  EXPECT_GT(gap(start), 0.15f);
+  EXPECT_LT(gap(end), 0.03f);
+  // The contact part went down from the chin to the palm in front of the chest.
+  EXPECT_LT(glm::dot(end.tip(kRight, 2) - start.tip(kRight, 2), rig.up), -0.1f);
 }
 
 }  // namespace
