@@ -17,26 +17,19 @@
 #include "synthesis/sign_motion.h"
 #include "synthesis/signing_avatar.h"
 #include "synthesis/synthesize.h"
+#include "synthesis_fixture.h"
 
 namespace sw::synthesis {
 namespace {
 
 const std::string kRoot = SIGNWEAVE_SOURCE_DIR;
 
-bool read(const std::string& path, std::string* out) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return true;
-}
 
 class SynthesisAlphabet : public ::testing::TestWithParam<const char*> {
  protected:
   void SetUp() override {
     std::string text, error;
-    if (!read(kRoot + "/data/" + GetParam() + "/alphabet.jsonl", &text)) GTEST_SKIP() << "no data alphabet";
+    if (!testing::read_text_file(kRoot + "/data/" + GetParam() + "/alphabet.jsonl", &text)) GTEST_SKIP() << "no data alphabet";
     ASSERT_TRUE(parse_alphabet_jsonl(text, &alphabet_, &error)) << error;
     avatar_ = load_signing_avatar_file(kRoot + "/models/signweave-avatar.glb");
     if (!avatar_.ok()) GTEST_SKIP() << "models/signweave-avatar.glb: " << avatar_.error;
@@ -121,7 +114,7 @@ ArmDepths arm_depths(const SynthContext& ctx, const SynthesisResult& r) {
 
 TEST(SynthesisLexicon, ArmsStayOutOfTheBodyAndOfEachOther) {
   std::string text;
-  if (!read(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
+  if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
   SigningAvatar avatar = load_signing_avatar_file(kRoot + "/models/signweave-avatar.glb");
   if (!avatar.ok()) GTEST_SKIP() << "models/signweave-avatar.glb: " << avatar.error;
   Synthesizer synth(avatar.avatar);

@@ -20,6 +20,7 @@
 #include "synthesis/rig.h"
 #include "synthesis/signing_avatar.h"
 #include "synthesis/synthesize.h"
+#include "synthesis_fixture.h"
 
 namespace sw::synthesis {
 namespace {
@@ -35,14 +36,6 @@ constexpr float kMaxStepM = 0.10f;
 // then released (GOOD's 17 cm jump) changes its displacement by the whole jump in one frame.
 constexpr float kMaxStepChangeM = 0.056f;
 
-bool read(const std::string& path, std::string* out) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return true;
-}
 
 // The sign's own motion, without the transitions from and back to the rest pose: those are
 // still too fast (fingertips at up to ~5 m/s, 16 cm/frame, raising the hand for ME on the project
@@ -129,7 +122,7 @@ class MotionSmoothness : public ::testing::TestWithParam<const char*> {
 
 TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
   std::string text;
-  if (!read(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
+  if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
   Synthesizer synth(avatar_);
   ASSERT_TRUE(synth.ok()) << synth.error();
   // Known gaps, measured (the worse of the two rigs, rounded up to 10 mm) and held to their own
@@ -182,7 +175,7 @@ TEST_P(MotionSmoothness, AlphabetsAndLetterPairsMoveContinuously) {
   const Bound letters_bound{kMaxStepM * 1000.0f, 72.0f};
   for (const char* lang : {"ase", "ukl"}) {
     std::string text, error;
-    if (!read(kRoot + "/data/" + lang + "/alphabet.jsonl", &text)) GTEST_SKIP() << "no data alphabet " << lang;
+    if (!testing::read_text_file(kRoot + "/data/" + lang + "/alphabet.jsonl", &text)) GTEST_SKIP() << "no data alphabet " << lang;
     std::vector<AlphabetEntry> alphabet;
     ASSERT_TRUE(parse_alphabet_jsonl(text, &alphabet, &error)) << error;
     std::vector<PhraseItem> letters;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,16 @@
 #include "synthesis/synthesize.h"
 
 namespace sw::synthesis::testing {
+
+// Reads a whole file (the data/ files the lexicon and alphabet tests walk); false if unreadable.
+inline bool read_text_file(const std::string& path, std::string* out) {
+  std::ifstream in(path);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  *out = ss.str();
+  return true;
+}
 
 // The reference avatar re-rigged: same bind positions scaled by `scale`, but every joint gets a
 // different, non-identity rest rotation (as arbitrary glTF rigs have).
