@@ -129,15 +129,11 @@ TEST(SynthesisLexicon, ArmsStayOutOfTheBodyAndOfEachOther) {
   // DIFFERENT's and BOOK's forearms and GOOD (10 mm before) now meet the 5 mm rule.
   const std::map<std::string, float> known_trunk_mm = {};
   const std::map<std::string, float> known_forearms_mm = {{"LOVE", 15.0f}};
-  std::istringstream lines(text);
-  std::string line;
   int signs = 0;
   float worst_trunk = 0.0f, worst_forearms = 0.0f;
-  while (std::getline(lines, line)) {
-    if (line.empty()) continue;
-    nlohmann::json entry = nlohmann::json::parse(line);
-    const std::string gloss = entry.at("gloss").get<std::string>();
-    PhraseText t = phrase_from_text(entry.at("notation").get<std::string>(), {});
+  for (const testing::LexiconSign& sign : testing::lexicon_signs(text)) {
+    const std::string& gloss = sign.gloss;
+    const PhraseText& t = sign.text;
     ASSERT_TRUE(t.ok()) << gloss;
     SynthesisResult r = synth.phrase(t.items, SynthesisOptions{});
     ASSERT_TRUE(r.ok()) << gloss << ": " << r.errors[0].message;

@@ -144,14 +144,10 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
       {"MORNING", {100, 100}},  {"PLEASE", {100, 70}},     {"SORRY", {100, 70}},
       {"STUDENT", {220, 250}},  {"TEACHER", {100, 70}},    {"TELL", {120, 120}},
       {"THANK-YOU", {120, 120}}};
-  std::istringstream lines(text);
-  std::string line;
   int signs = 0, smooth = 0;
-  while (std::getline(lines, line)) {
-    if (line.empty()) continue;
-    nlohmann::json entry = nlohmann::json::parse(line);
-    const std::string gloss = entry.at("gloss").get<std::string>();
-    PhraseText t = phrase_from_text(entry.at("notation").get<std::string>(), {});
+  for (const testing::LexiconSign& sign : testing::lexicon_signs(text)) {
+    const std::string& gloss = sign.gloss;
+    const PhraseText& t = sign.text;
     ASSERT_TRUE(t.ok()) << gloss;
     SynthesisResult r = synth.phrase(t.items, from_key_pose());
     ASSERT_TRUE(r.ok()) << gloss;

@@ -8,8 +8,11 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "notation/sign_spec.h"
 #include "synthesis/handshape.h"
+#include "synthesis/phrase_text.h"
 #include "synthesis/reference_humanoid.h"
 #include "synthesis/rig.h"
 #include "synthesis/synthesize.h"
@@ -24,6 +27,25 @@ inline bool read_text_file(const std::string& path, std::string* out) {
   ss << in.rdbuf();
   *out = ss.str();
   return true;
+}
+
+// One sign of a data/<language>/lexicon.jsonl file, its notation read into phrase items.
+struct LexiconSign {
+  std::string gloss;
+  PhraseText text;
+};
+// The signs of a lexicon file's text, one JSON object per non-empty line.
+inline std::vector<LexiconSign> lexicon_signs(const std::string& jsonl) {
+  std::vector<LexiconSign> signs;
+  std::istringstream lines(jsonl);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.empty()) continue;
+    const nlohmann::json entry = nlohmann::json::parse(line);
+    signs.push_back({entry.at("gloss").get<std::string>(),
+                     phrase_from_text(entry.at("notation").get<std::string>(), {})});
+  }
+  return signs;
 }
 
 // The reference avatar re-rigged: same bind positions scaled by `scale`, but every joint gets a
