@@ -15,6 +15,9 @@ const STEPS = ['app-start', 'wasm-fetch-start', 'wasm-script-loaded', 'wasm-inst
   'avatar-parsed', 'mesh-uploaded', 'programs-linked', 'signer-ready', 'ready', 'sign-requested', 'sign-arrived', 'sign-fetched',
   'sign-synthesised', 'first-avatar-frame', 'first-signing-frame'];
 
+// Steps a #/sign/ID link does not wait for before it signs.
+const NOT_BEFORE_FIRST_FRAME = new Set(['ready']);
+
 // Each pair: the first step happens no later than the second.
 const BEFORE = [
   ['app-start', 'wasm-fetch-start'], ['wasm-fetch-start', 'wasm-instantiated'],
@@ -49,7 +52,11 @@ test('the start-up timeline is exposed, complete and ordered from navigation to 
     const { marks, measures, resources } = r.startup;
     for (const step of STEPS) {
       assert.ok(Number.isFinite(marks[step]) && marks[step] >= 0, `mark ${step}: ${marks[step]}`);
-      assert.ok(marks[step] <= r.first + 0.1, `${step} (${marks[step]} ms) after the first signing frame (${r.first} ms)`);
+      // 'ready' (the language list loaded) is not on a #/sign link's path: the sign plays without
+      // it (app.js), so it may come just after the first signing frame. Every other step is before.
+      if (!NOT_BEFORE_FIRST_FRAME.has(step)) {
+        assert.ok(marks[step] <= r.first + 0.1, `${step} (${marks[step]} ms) after the first signing frame (${r.first} ms)`);
+      }
       assert.ok(r.userTiming.includes(`sw:${step}`), `sw:${step} is a User Timing mark too`);
     }
     assert.ok(Math.abs(marks['first-signing-frame'] - r.first) < 0.1, 'the mark is the metric the bench reads');
