@@ -722,6 +722,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       return std::max(arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m,
                       hand_penetration(ctx.body, *pb, plan.side, !plan.exempt_trunk, check_forearm).depth_m);
     };
+    // Poses this arm (and its fingers) as `ap` and scores it.
+    auto depth_with = [&](const ArmPose& ap) {
+      apply_arm(rig, plan.side, ap, pb);
+      pose_fingers(rig, plan.side, h.angles, ap.hand, pb);
+      pb->finalize();
+      return depth_of();
+    };
     if (arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m <= 0.002f) return;
     float depth = depth_of();
     const float base = t->swivel_rad;
@@ -732,10 +739,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         t->swivel_rad = base + sign * 0.1f * static_cast<float>(k);
         ArmPose ap = solve_arm(rig, plan.side, *t);
         if (ap.reach_error_m > base_reach + 0.002f) continue;  // a touch must still touch
-        apply_arm(rig, plan.side, ap, pb);
-        pose_fingers(rig, plan.side, h.angles, ap.hand, pb);
-        pb->finalize();
-        float d = depth_of();
+        float d = depth_with(ap);
         if (d < best_depth - 1e-4f) {
           best_depth = d;
           best_swivel = t->swivel_rad;
@@ -752,10 +756,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       ArmTarget turned = *t;
       ArmPose tp = ap;
       if (turn_hand_out_of_body(rig, plan.side, &turned, &tp)) {
-        apply_arm(rig, plan.side, tp, pb);
-        pose_fingers(rig, plan.side, h.angles, tp.hand, pb);
-        pb->finalize();
-        float d = depth_of();
+        float d = depth_with(tp);
         if (d < best_depth - 1e-4f) {
           best_depth = d;
           ap = tp;
