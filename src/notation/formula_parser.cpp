@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "notation/formula.h"
 #include "notation/seed_places.h"
@@ -129,6 +131,14 @@ std::string describe(const Token& t) {
   }
 }
 
+
+// Which parts of a movement's target orientation were written, so the unwritten ones can be taken
+// from the hand's orientation before that movement (a movement that writes only P(...) turns the
+// palm and keeps the fingers where they were).
+struct OrientationWritten {
+  bool e = false, p = false, d = false;
+  Token at;  // the first orientation item, for diagnostics
+};
 
 // The parts of one hand term, before they are merged into the sign.
 struct HandTerm {
@@ -279,6 +289,7 @@ class SignReader {
 
   // hand := '(' item {',' item} ')' ; items in any order
   bool read_hand(HandTerm* term, bool is_right, SignSpec* sign) {
+    std::vector<std::vector<OrientationWritten>> written;  // parallel to term->steps
     static const char* kItems = "a hand item (F_i^k, H, D<i>, E, P, L<i>, Loc, C, M, Par, Rep)";
     if (!expect(Tok::LParen, is_right ? "'(' after R" : "'(' after L")) return false;
     bool have_shape_base = false, have_loc = false, have_e = false, have_p = false,
@@ -340,16 +351,19 @@ class SignReader {
       } else if (w == "M") {
         MovementStep step;
         step.dominant.emplace_back();
-        if (!read_movement(&step.dominant.back())) return false;
+        written.emplace_back(1);
+        if (!read_movement(&step.dominant.back(), &written.back().back())) return false;
         term->steps.push_back(std::move(step));
       } else if (w == "Par") {
         advance();
         if (!expect(Tok::LParen, "'(' after Par")) return false;
         MovementStep step;
+        written.emplace_back();
         while (tok_.kind != Tok::RParen) {
           if (!is_ident("M")) return expected("a movement M(...) inside Par(...)");
           step.dominant.emplace_back();
-          if (!read_movement(&step.dominant.back())) return false;
+          written.back().emplace_back();
+          if (!read_movement(&step.dominant.back(), &written.back().back())) return false;
           if (!accept(Tok::Comma) && tok_.kind != Tok::RParen) return expected("',' or ')' in Par(...)");
         }
         advance();
@@ -365,9 +379,38 @@ class SignReader {
       } else {
         return expected(kItems);
       }
-      if (accept(Tok::RParen)) return true;
+      if (accept(Tok::RParen)) return inherit_unwritten_orientation(term, written);
       if (!accept(Tok::Comma)) return expected("',' or ')' after a hand item");
     }
+  }
+
+  // A movement's target orientation keeps what it does not write: its unwritten E or P is the
+  // hand's at the start of that movement (the term's own, then each earlier movement's target),
+  // not the default. A hand written with D<i> has no separate E and P to keep, so a movement
+  // changing only one of them is ambiguous and reported.
+  bool inherit_unwritten_orientation(HandTerm* term, const std::vector<std::vector<OrientationWritten>>& written) {
+    Orientation running = term->hand.orientation;
+    for (std::size_t s = 0; s < term->steps.size(); ++s) {
+      std::vector<Movement>& moves = term->steps[s].dominant;
+      std::optional<Orientation> after;
+      for (std::size_t k = 0; k < moves.size(); ++k) {
+        if (!moves[k].to_orientation) continue;
+        const OrientationWritten& w = written[s][k];
+        Orientation& o = *moves[k].to_orientation;
+        if (!w.d) {
+          if (w.e != w.p && running.seed_palm != SeedPalm::None) {
+            return fail(w.at, std::string("this movement changes only ") + (w.e ? "E" : "P") +
+                                  " of a hand written with " + name_of(running.seed_palm) +
+                                  ": write both E(...) and P(...), or a D<i>");
+          }
+          if (!w.e) o.extended_finger = running.extended_finger;
+          if (!w.p) o.palm = running.palm;
+        }
+        after = o;
+      }
+      if (after) running = *after;
+    }
+    return true;
   }
 
   static bool is_seed_location(std::string_view w) {
@@ -583,7 +626,7 @@ class SignReader {
   }
 
   // M '(' kind {[','] arg} ')'
-  bool read_movement(Movement* out) {
+  bool read_movement(Movement* out, OrientationWritten* written) {
     advance();  // M
     if (!expect(Tok::LParen, "'(' after M")) return false;
     Movement m;
@@ -646,12 +689,16 @@ class SignReader {
       } else if (w == "E" || w == "P") {
         const bool is_e = w == "E";
         advance();
+        if (!have_orientation) written->at = at;
+        (is_e ? written->e : written->p) = true;
         Direction& target = is_e ? orientation.extended_finger : orientation.palm;
         if (!read_direction_arg(is_e ? "the extended-finger direction" : "the palm direction", &target)) {
           return false;
         }
         have_orientation = true;
       } else if (w.size() == 2 && w[0] == 'D' && w[1] >= '1' && w[1] <= '5') {
+        if (!have_orientation) written->at = at;
+        written->d = true;
         orientation.seed_palm = static_cast<SeedPalm>(w[1] - '0');
         have_orientation = true;
         advance();

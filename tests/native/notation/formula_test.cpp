@@ -106,6 +106,37 @@ TEST(Formula, TwoHandsMovementsSymmetryRepetitionNonManual) {
   EXPECT_FLOAT_EQ(s.nonmanual.expression_intensity, 0.6f);
 }
 
+// A movement's target orientation keeps what it does not write. Before this, an unwritten part
+// fell back to the defaults (E uo, P i): `M(replace, P(d))` on a hand pointing left also swung
+// its fingers up and out.
+TEST(Formula, MovementOrientationKeepsWhatItDoesNotWrite) {
+  const SignSpec s = parse_one("R(H(flat), E(l), P(u), M(replace, P(d)), M(straight, o, E(o)), M(replace, P(r)))");
+  ASSERT_EQ(s.movements.size(), 3u);
+  const auto& m = s.movements;
+  ASSERT_TRUE(m[0].dominant[0].to_orientation.has_value());
+  EXPECT_EQ(m[0].dominant[0].to_orientation->extended_finger, (Direction{1, 0, 0}));  // kept: left
+  EXPECT_EQ(m[0].dominant[0].to_orientation->palm, (Direction{0, -1, 0}));
+  ASSERT_TRUE(m[1].dominant[0].to_orientation.has_value());
+  EXPECT_EQ(m[1].dominant[0].to_orientation->extended_finger, (Direction{0, 0, 1}));
+  EXPECT_EQ(m[1].dominant[0].to_orientation->palm, (Direction{0, -1, 0}));  // from the movement before
+  // Written in any order: the movement may come before the hand's own E(...).
+  const SignSpec t = parse_one("R(M(replace, P(d)), H(flat), E(r), P(u))");
+  ASSERT_TRUE(t.movements[0].dominant[0].to_orientation.has_value());
+  EXPECT_EQ(t.movements[0].dominant[0].to_orientation->extended_finger, (Direction{-1, 0, 0}));
+  // The other hand's movements inherit from the other hand.
+  const SignSpec u = parse_one("R(H(flat), E(o), P(d)) L(H(flat), E(u), P(r), M(replace, E(o)))");
+  ASSERT_EQ(u.movements.size(), 1u);
+  ASSERT_EQ(u.movements[0].nondominant.size(), 1u);
+  ASSERT_TRUE(u.movements[0].nondominant[0].to_orientation.has_value());
+  EXPECT_EQ(u.movements[0].nondominant[0].to_orientation->palm, (Direction{-1, 0, 0}));
+  // A D<i> hand has no separate E and P to keep: changing one of them alone is reported there.
+  const Diagnostic d = first_error("R(D2, M(replace, P(d)))");
+  EXPECT_EQ(d.symbol, "P");
+  EXPECT_EQ(d.column, 18);
+  EXPECT_NE(d.message.find("D2"), std::string::npos) << d.message;
+  EXPECT_TRUE(parse_one("R(D2, M(replace, E(o), P(d)), M(replace, D3))").movements.size() == 2u);
+}
+
 TEST(Formula, RoundTripPrintThenParse) {
   const char* formulas[] = {
       "R(L1(0), D1, F_0^1(0.5), F_0^2(1), F_0^3(1), F_0^4(1), F_0^5(1))",
