@@ -96,6 +96,10 @@ glm::quat axis_angle(const glm::vec3& unit_axis, float angle_rad);
 // orthogonalised against a's first.
 glm::quat frame_to_frame(const glm::vec3& a0, const glm::vec3& b0, const glm::vec3& a1,
                          const glm::vec3& b1);
+// The orthonormal frame (a, b, a x b) of frame_to_frame, and frame_to_frame from such a frame
+// worked out once (a bind-pose frame the arm IK maps onto every candidate pose).
+glm::mat3 orthonormal_frame(const glm::vec3& a, const glm::vec3& b);
+glm::quat frame_to_frame(const glm::mat3& frame0, const glm::vec3& a1, const glm::vec3& b1);
 // Shortest-path slerp (never the long way round, never a flip at +-180 degrees).
 glm::quat slerp_shortest(const glm::quat& a, const glm::quat& b, float t);
 // Angle of a rotation, radians in [0, pi].
