@@ -10,15 +10,6 @@
 
 namespace sw::synthesis {
 
-glm::vec3 reject(const glm::vec3& v, const glm::vec3& unit_axis) {
-  return v - glm::dot(v, unit_axis) * unit_axis;
-}
-
-glm::vec3 safe_normalize(const glm::vec3& v, const glm::vec3& fallback) {
-  float len = glm::length(v);
-  return len > 1e-6f ? v / len : fallback;
-}
-
 glm::quat axis_angle(const glm::vec3& unit_axis, float angle_rad) {
   float h = 0.5f * angle_rad;
   float s = std::sin(h);
