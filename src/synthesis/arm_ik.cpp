@@ -22,35 +22,88 @@ struct Chain {
   float elbow_flex = 0.0f, elevation = 0.0f, protraction = 0.0f;
 };
 
-Chain solve_chain(const Rig& rig, Side side, const glm::vec3& wrist_target, float swivel) {
+// What solve_chain needs of one arm's bind pose: constant for a rig, so worked out once instead of
+// on every call (a sign solves the chain a few thousand times: every swivel candidate, every
+// frame, every iteration of solve_at). Kept per thread for the last rig seen, and checked against
+// every input it is made from, so a different (or rebuilt) rig never reads a stale one.
+struct ChainBind {
+  // Inputs.
+  glm::vec3 s0{0.0f}, pivot{0.0f}, elbow{0.0f}, wrist{0.0f}, up{0.0f}, forward{0.0f}, left{0.0f};
+  float l1 = -1.0f, l2 = -1.0f;
+  bool has_shoulder = false;
+  // Derived.
+  glm::vec3 out_dir{0.0f}, elev_axis{0.0f}, prot_axis{0.0f}, u1{0.0f}, u2{0.0f}, hinge_bind{0.0f};
+  glm::mat3 upper_frame{1.0f}, lower_frame{1.0f};  // orthonormal_frame of the bind bones
+  float d_min = 0.0f, d_max = 0.0f;
+  bool made_from(const Rig& rig, const ArmRig& a) const {
+    return l1 == a.upper_len_m && l2 == a.lower_len_m && has_shoulder == (a.shoulder >= 0) &&
+           s0 == rig.bind_pos[a.upper] && (!has_shoulder || pivot == rig.bind_pos[a.shoulder]) &&
+           elbow == rig.bind_pos[a.lower] && wrist == rig.bind_pos[a.hand] && up == rig.up &&
+           forward == rig.forward && left == rig.left;
+  }
+};
+
+const ChainBind& chain_bind(const Rig& rig, Side side) {
+  thread_local ChainBind cache[2];
+  ChainBind& b = cache[side];
   const ArmRig& a = rig.arms[side];
+  if (b.made_from(rig, a)) return b;
   const ArmLimits& lim = arm_limits();
-  const float l1 = a.upper_len_m, l2 = a.lower_len_m;
-  const glm::vec3 s0 = rig.bind_pos[a.upper];
-  const glm::vec3 out_dir = side == kLeft ? rig.left : -rig.left;  // lateral, away from the body
+  b = ChainBind{};
+  b.s0 = rig.bind_pos[a.upper];
+  b.has_shoulder = a.shoulder >= 0;
+  if (b.has_shoulder) b.pivot = rig.bind_pos[a.shoulder];
+  b.elbow = rig.bind_pos[a.lower];
+  b.wrist = rig.bind_pos[a.hand];
+  b.up = rig.up;
+  b.forward = rig.forward;
+  b.left = rig.left;
+  b.l1 = a.upper_len_m;
+  b.l2 = a.lower_len_m;
+  const float l1 = b.l1, l2 = b.l2;
+  b.out_dir = side == kLeft ? rig.left : -rig.left;  // lateral, away from the body
+  if (b.has_shoulder) {
+    glm::vec3 cl = safe_normalize(b.s0 - b.pivot, b.out_dir);
+    b.elev_axis = safe_normalize(glm::cross(cl, rig.up), rig.forward);
+    b.prot_axis = safe_normalize(glm::cross(cl, rig.forward), rig.up);
+  }
+  b.d_max = 0.9995f * (l1 + l2);
+  b.d_min = std::sqrt(std::max(1e-8f, l1 * l1 + l2 * l2 - 2.0f * l1 * l2 * std::cos(kPi - lim.elbow_flex_max)));
+  // Upper arm bind frame (bone dir, elbow-bend dir = body forward): a T/A-posed elbow flexes
+  // towards the body's front.
+  b.u1 = safe_normalize(b.elbow - b.s0, b.out_dir);
+  glm::vec3 b1 = safe_normalize(reject(rig.forward, b.u1), rig.forward);
+  b.upper_frame = orthonormal_frame(b.u1, b1);
+  b.hinge_bind = glm::normalize(glm::cross(b.u1, b1));
+  b.u2 = safe_normalize(b.wrist - b.elbow, b.u1);
+  b.lower_frame = orthonormal_frame(b.u2, glm::cross(b.hinge_bind, b.u2));
+  return b;
+}
+
+Chain solve_chain(const Rig& rig, Side side, const glm::vec3& wrist_target, float swivel) {
+  const ChainBind& bind = chain_bind(rig, side);
+  const float l1 = bind.l1, l2 = bind.l2;
+  const glm::vec3 s0 = bind.s0;
+  const glm::vec3 out_dir = bind.out_dir;
+  const ArmLimits& lim = arm_limits();
   Chain c;
   glm::vec3 shoulder_pos = s0;
   // Clavicle: shrug for targets above the shoulder, protract for far ones (comfort first: the
   // shoulder moves only when the arm alone would be near its reach or high).
-  if (a.shoulder >= 0) {
-    glm::vec3 pivot = rig.bind_pos[a.shoulder];
+  if (bind.has_shoulder) {
+    glm::vec3 pivot = bind.pivot;
     glm::vec3 v = wrist_target - s0;
     float reach = glm::length(v) / (l1 + l2);
     float height = glm::dot(v, rig.up) / (l1 + l2);
     float fwd = std::max(0.0f, glm::dot(safe_normalize(v, rig.forward), rig.forward));
     c.elevation = clampf(0.6f * (height + 0.15f), 0.0f, lim.clavicle_elevation);
     c.protraction = clampf(1.2f * (reach - 0.75f) * fwd, 0.0f, lim.clavicle_protraction);
-    glm::vec3 cl = safe_normalize(s0 - pivot, out_dir);
-    glm::vec3 elev_axis = safe_normalize(glm::cross(cl, rig.up), rig.forward);
-    glm::vec3 prot_axis = safe_normalize(glm::cross(cl, rig.forward), rig.up);
-    c.shoulder = axis_angle(prot_axis, c.protraction) * axis_angle(elev_axis, c.elevation);
+    c.shoulder = axis_angle(bind.prot_axis, c.protraction) * axis_angle(bind.elev_axis, c.elevation);
     shoulder_pos = pivot + c.shoulder * (s0 - pivot);
   }
   // Two-bone: distance clamped between full extension and the elbow's flexion limit.
   glm::vec3 to = wrist_target - shoulder_pos;
-  float d_max = 0.9995f * (l1 + l2);
-  float d_min = std::sqrt(std::max(1e-8f, l1 * l1 + l2 * l2 - 2.0f * l1 * l2 * std::cos(kPi - lim.elbow_flex_max)));
-  float d = clampf(glm::length(to), d_min, d_max);
+  float d = clampf(glm::length(to), bind.d_min, bind.d_max);
   glm::vec3 axis = safe_normalize(to, out_dir);
   float cos_a = clampf((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f);
   float sin_a = std::sqrt(std::max(0.0f, 1.0f - cos_a * cos_a));
@@ -63,18 +116,13 @@ Chain solve_chain(const Rig& rig, Side side, const glm::vec3& wrist_target, floa
   glm::vec3 elbow = shoulder_pos + l1 * (cos_a * axis + sin_a * sw);
   c.wrist = shoulder_pos + d * axis;
   c.elbow_flex = kPi - std::acos(clampf((l1 * l1 + l2 * l2 - d * d) / (2.0f * l1 * l2), -1.0f, 1.0f));
-  // Upper arm: bind (bone dir, elbow-bend dir = body forward) -> posed (bone dir, towards the side
-  // the forearm folds to). A T/A-posed elbow flexes towards the body's front.
-  glm::vec3 u1 = safe_normalize(rig.bind_pos[a.lower] - s0, out_dir);
-  glm::vec3 b1 = safe_normalize(reject(rig.forward, u1), rig.forward);
+  // Upper arm: bind frame -> posed (bone dir, towards the side the forearm folds to).
   glm::vec3 u1p = safe_normalize(elbow - shoulder_pos, axis);
   glm::vec3 b1p = safe_normalize(reject(-sw, u1p), -sw);
-  c.upper = frame_to_frame(u1, b1, u1p, b1p);
-  glm::vec3 hinge_bind = glm::normalize(glm::cross(u1, b1));
-  glm::vec3 hinge = c.upper * hinge_bind;
-  glm::vec3 u2 = safe_normalize(rig.bind_pos[a.hand] - rig.bind_pos[a.lower], u1);
+  c.upper = frame_to_frame(bind.upper_frame, u1p, b1p);
+  glm::vec3 hinge = c.upper * bind.hinge_bind;
   glm::vec3 u2p = safe_normalize(c.wrist - elbow, u1p);
-  c.lower0 = frame_to_frame(u2, glm::cross(hinge_bind, u2), u2p, glm::cross(hinge, u2p));
+  c.lower0 = frame_to_frame(bind.lower_frame, u2p, glm::cross(hinge, u2p));
   return c;
 }
 

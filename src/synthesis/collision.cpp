@@ -251,8 +251,20 @@ Penetration hand_penetration(const BodyModel& body, const PoseBuilder& pose, Sid
     if (glm::length(other_palm - centre) <= bound + 0.25f) {  // 0.25 m: more than a hand's reach
       Sphere theirs[24];
       int m = hand_spheres(body, pose, o, theirs);
-      for (int i = 0; i < n; ++i)
+      // The other hand's bounding sphere: a sphere of mine farther from its centre than its
+      // radius plus mine cannot overlap any of theirs (depth <= 0, never kept), so its 21 pair
+      // tests are skipped (1e-4 m of slack for rounding). Hands near each other but not
+      // touching are most frames of a two-handed sign.
+      glm::vec3 their_centre(0.0f);
+      for (int j = 0; j < m; ++j) their_centre += theirs[j].c;
+      their_centre /= static_cast<float>(m);
+      float their_bound = 0.0f;
+      for (int j = 0; j < m; ++j)
+        their_bound = std::max(their_bound, glm::length(theirs[j].c - their_centre) + theirs[j].r);
+      for (int i = 0; i < n; ++i) {
+        if (glm::length(mine[i].c - their_centre) > their_bound + mine[i].r + 1e-4f) continue;
         for (int j = 0; j < m; ++j) consider(mine[i], theirs[j].c, theirs[j].c, theirs[j].r, "other hand");
+      }
     }
   }
   return worst;

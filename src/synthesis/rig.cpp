@@ -10,32 +10,34 @@
 
 namespace sw::synthesis {
 
-glm::vec3 reject(const glm::vec3& v, const glm::vec3& unit_axis) {
-  return v - glm::dot(v, unit_axis) * unit_axis;
-}
-
-glm::vec3 safe_normalize(const glm::vec3& v, const glm::vec3& fallback) {
-  float len = glm::length(v);
-  return len > 1e-6f ? v / len : fallback;
-}
-
 glm::quat axis_angle(const glm::vec3& unit_axis, float angle_rad) {
   float h = 0.5f * angle_rad;
   float s = std::sin(h);
   return glm::quat(std::cos(h), unit_axis.x * s, unit_axis.y * s, unit_axis.z * s);
 }
 
+glm::mat3 orthonormal_frame(const glm::vec3& a, const glm::vec3& b) {
+  glm::vec3 x = safe_normalize(a, glm::vec3(1, 0, 0));
+  glm::vec3 y = reject(b, x);
+  float len = glm::length(y);
+  if (len > 1e-6f) {
+    y /= len;
+  } else {
+    // b along a: any perpendicular will do (worked out only then: the solvers call this per
+    // swivel candidate and per iteration).
+    glm::vec3 helper = std::fabs(x.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    y = safe_normalize(reject(helper, x), glm::vec3(0, 0, 1));
+  }
+  return glm::mat3(x, y, glm::cross(x, y));
+}
+
+glm::quat frame_to_frame(const glm::mat3& frame0, const glm::vec3& a1, const glm::vec3& b1) {
+  return glm::normalize(glm::quat_cast(orthonormal_frame(a1, b1) * glm::transpose(frame0)));
+}
+
 glm::quat frame_to_frame(const glm::vec3& a0, const glm::vec3& b0, const glm::vec3& a1,
                          const glm::vec3& b1) {
-  auto basis = [](const glm::vec3& a, const glm::vec3& b) {
-    glm::vec3 x = safe_normalize(a, glm::vec3(1, 0, 0));
-    glm::vec3 helper = std::fabs(x.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-    glm::vec3 y = safe_normalize(reject(b, x), safe_normalize(reject(helper, x), glm::vec3(0, 0, 1)));
-    glm::vec3 z = glm::cross(x, y);
-    return glm::mat3(x, y, z);
-  };
-  glm::mat3 m0 = basis(a0, b0), m1 = basis(a1, b1);
-  return glm::normalize(glm::quat_cast(m1 * glm::transpose(m0)));
+  return frame_to_frame(orthonormal_frame(a0, b0), a1, b1);
 }
 
 glm::quat slerp_shortest(const glm::quat& a, const glm::quat& b_in, float t) {

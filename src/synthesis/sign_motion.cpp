@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
+#include <type_traits>
 
 #include "synthesis/arm_ik.h"
 #include "synthesis/hand_parts.h"
@@ -544,6 +546,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
 
   // Per-frame targets: for each hand, a function of the frame giving its HandState.
   struct FrameTarget { std::array<HandState, 2> hand; };
+  // Bitwise: equal states give equal solutions (a +0/-0 or NaN mismatch only costs a solve).
+  static_assert(std::is_trivially_copyable<HandState>::value &&
+                    sizeof(HandState) % sizeof(float) == 0 && alignof(HandState) == alignof(float),
+                "HandState is compared bitwise: floats only, no padding");
+  auto same_states = [](const FrameTarget& a, const FrameTarget& b) {
+    return std::memcmp(a.hand.data(), b.hand.data(), sizeof(a.hand)) == 0;
+  };
   std::vector<FrameTarget> frames;
   auto add_hold = [&](float seconds) {
     int n = std::max(1, static_cast<int>(std::lround(seconds * fps / speed)));
@@ -732,8 +741,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     if (arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m <= 0.002f) return;
     float depth = depth_of();
     const float base = t->swivel_rad;
-    const float base_reach = solve_arm(rig, plan.side, *t).reach_error_m;
+    const ArmPose base_pose = solve_arm(rig, plan.side, *t);
+    const float base_reach = base_pose.reach_error_m;
     float best_depth = depth, best_swivel = base;
+    ArmPose best_pose = base_pose;  // the winner's pose, kept (solving it again gave the same)
     for (int k = 1; k <= 12 && best_depth > 0.002f; ++k) {
       for (float sign : {1.0f, -1.0f}) {
         t->swivel_rad = base + sign * 0.1f * static_cast<float>(k);
@@ -743,13 +754,14 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         if (d < best_depth - 1e-4f) {
           best_depth = d;
           best_swivel = t->swivel_rad;
+          best_pose = ap;
         }
         if (best_depth <= 0.002f) break;
       }
     }
     t->swivel_rad = best_swivel;
     *applied_swivel = best_swivel - base;
-    ArmPose ap = solve_arm(rig, plan.side, *t);
+    ArmPose ap = best_pose;
     if (best_depth > 0.002f) {
       // No swivel clears it: the wrist itself is in the body; the hand turns out about its
       // contact point (kept only if that helps the arm without pushing the hand in).
@@ -786,8 +798,23 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       out->contact_distance_m.clear();
     }
     if (!redo) out->pushes = 0;
+    int prev_pushes = 0;  // what the previous frame of this pass added to out->pushes
     for (int f = 0; f < out->frame_count; ++f) {
       if (redo && !(*redo)[f]) continue;
+      // A hold repeats its frame's hand states, and a frame is solved from its states alone
+      // (from scratch, nothing carried over): the frame just solved in this pass with the same
+      // states has this one's solution. Holds are a third of a sign's frames (all but one of a
+      // static sign's), each an IK solve and collision checks per hand.
+      if (f > 0 && (!redo || (*redo)[f - 1]) && same_states(frames[f], frames[f - 1])) {
+        std::copy_n(&out->rotations[static_cast<size_t>(f - 1) * J], J, &out->rotations[static_cast<size_t>(f) * J]);
+        out->exempt[f] = exempt;
+        turns[f] = turns[f - 1];
+        swivel_fixes[f] = swivel_fixes[f - 1];
+        push_offsets[f] = push_offsets[f - 1];
+        out->pushes += prev_pushes;
+        continue;
+      }
+      const int pushes_before = out->pushes;
       PoseBuilder pb(rig);
       // Inactive hands keep the rest pose.
       for (int i = 0; i < 2; ++i) {
@@ -842,6 +869,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       }
       pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
       out->exempt[f] = exempt;
+      prev_pushes = out->pushes - pushes_before;
       if (f == 0) {
         // Measured distances of the contact parts to their places (acceptance: < 1 cm with touch,
         // 3-10 cm without).

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "synthesis/arm_ik.h"
 #include "synthesis/movement.h"
@@ -30,7 +31,13 @@ float max_penetration(const SynthContext& ctx, const glm::quat* frames, int fram
   float worst = 0.0f;
   PoseBuilder pb(rig);
   for (int f = 0; f < frame_count; ++f) {
-    pb.set_from_local(frames + static_cast<size_t>(f) * rig.joint_count);
+    // A held frame repeats the one before (the holds of a sign, a pause): same pose, same
+    // depths, and the first occurrence already counted. Posing a frame is most of the check.
+    const glm::quat* frame = frames + static_cast<size_t>(f) * rig.joint_count;
+    if (f > 0 && exempt[f] == exempt[f - 1] &&
+        std::memcmp(frame, frame - rig.joint_count, sizeof(glm::quat) * rig.joint_count) == 0)
+      continue;
+    pb.set_from_local(frame);
     for (int s = 0; s < 2; ++s) {
       Side side = static_cast<Side>(s);
       bool trunk = !(exempt[f] & exempt_bit(side, false));

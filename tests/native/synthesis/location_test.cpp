@@ -101,6 +101,31 @@ TEST(SynthesisLocation, ClavicleRisesOnlyForHighTargets) {
   EXPECT_GT(solve_arm(rig, kRight, high).clavicle_elevation_rad, 0.1f);
 }
 
+TEST(SynthesisLocation, ArmSolveNeverUsesAnotherRigsMeasurements) {
+  // The arm IK keeps each arm's bind-pose geometry for the last rig it saw (the chain is solved
+  // thousands of times per sign); a rig rebuilt in place for another avatar (here 0.8 times the
+  // size) must not get the first avatar's measurements. Checked by forward kinematics on the
+  // rig itself: the posed wrist is where the solve aimed it.
+  avatar::Avatar a = make_reference_humanoid(), b = make_rotated_variant(0.8f);
+  std::string error;
+  Rig rig;
+  auto wrist_miss = [&](const char* which) {
+    ArmTarget t;
+    t.point = rig.bind_pos[rig.chest] + 0.3f * rig.forward - 0.1f * rig.left;
+    t.auto_swivel = false;
+    const ArmPose p = solve_arm(rig, kRight, t);
+    const float miss = glm::length(arm_segments(rig, kRight, p).wrist - t.point);
+    EXPECT_LT(miss, 0.001f) << which;
+    return miss;
+  };
+  ASSERT_TRUE(build_rig(a, &rig, &error)) << error;
+  wrist_miss("first avatar");
+  ASSERT_TRUE(build_rig(b, &rig, &error)) << error;
+  wrist_miss("second avatar, same Rig object");
+  ASSERT_TRUE(build_rig(a, &rig, &error)) << error;
+  wrist_miss("first avatar again");
+}
+
 TEST(SynthesisLocation, OtherHandIsThePlace) {
   avatar::Avatar av = make_reference_humanoid();
   Rig rig;
