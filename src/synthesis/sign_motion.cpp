@@ -783,8 +783,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // A wrist that flips: where a hand's requested orientation is out of the wrist's reach, the
   // clamped wrist angles can change branch between two frames (twist and flexion from one limit
   // to the other: LEARN's pinched hand on its way to the forehead, the wrist 17 cm in a frame).
-  // A change of a wrist angle faster than kWristFlipRadPerS (no wrist turns that fast: forearm
-  // rotation and wrist flexion peak at about 10-15 rad/s) marks a flip; that frame holds the
+  // A change of a wrist angle faster than kWristFlipRadPerS (the top of a wrist's speed: forearm
+  // rotation and wrist flexion peak at about 10-15 rad/s in fast movements; written wrist
+  // movements here turn at 3-4 rad/s; measured, 20 rad/s left GOOD's wrist jumping on the
+  // reference rig) marks a flip; that frame holds the
   // previous frame's wrist angles (arm_ik.h ArmTarget::previous; the reach rounds keep the
   // contact on its target), and the next ones turn from there at kWristTurnRadPerS until the
   // free solution is within that step again (hysteresis: the wrist turns through, then joins
@@ -792,7 +794,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // kWristTurnRadPerS: 6 rad/s, an unhurried wrist turn; measured on the lexicon, 4 rad/s left
   // LEARN's wrist so far behind its target at the forehead that the arm solve broke away (37 cm
   // in a frame), 9 rad/s raised STUDENT's step change to 96 mm.
-  constexpr float kWristFlipRadPerS = 30.0f;
+  constexpr float kWristFlipRadPerS = 15.0f;
   constexpr float kWristTurnRadPerS = 6.0f;
   // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
   std::vector<std::array<ArmPose, 2>> solved(frames.size());
