@@ -142,9 +142,26 @@ WristFrame wrist_frame(const Rig& rig, Side side) {
   return w;
 }
 
-// R_rel = lower^-1 * hand decomposed as twist(e1) * deviation(e2) * flexion(e3), each clamped.
+// An angle of a joint limited to [lo, hi], read from atan2 (so in (-pi, pi]). Inside its limits
+// it is kept. Beyond them it goes to a limit: without a previous value, the one on its side of
+// zero (the key poses' choice); with one (a path solved frame by frame), the limit with the least
+// angle to go round the circle plus the distance from the previous value. The requested angle
+// wrapping through +-pi then no longer flips the joint from one limit to the other in a frame:
+// it switches only when the other limit is nearer by the whole range (a continuous path of
+// requests gives a continuous path of poses until then).
+float clamp_limited(float a, float lo, float hi, const float* previous) {
+  if (a >= lo && a <= hi) return a;
+  if (!previous) return a > hi ? hi : lo;
+  auto around = [](float x) { return x - 2.0f * kPi * std::floor(x / (2.0f * kPi)); };  // [0, 2 pi)
+  float to_hi = around(a - hi) + std::fabs(hi - *previous);
+  float to_lo = around(lo - a) + std::fabs(lo - *previous);
+  return to_hi <= to_lo ? hi : lo;
+}
+
+// R_rel = lower^-1 * hand decomposed as twist(e1) * deviation(e2) * flexion(e3), each clamped
+// (towards the previous frame's angles when there is one, see clamp_limited).
 void solve_wrist(const WristFrame& w, const glm::quat& lower0, const glm::quat& hand_delta,
-                 float* twist, float* radial, float* flex) {
+                 const ArmPose* previous, float max_step, float* twist, float* radial, float* flex) {
   const ArmLimits& lim = arm_limits();
   glm::mat3 basis(w.e1, w.e2, w.e3);
   glm::quat rel = glm::conjugate(lower0) * hand_delta;
@@ -153,9 +170,18 @@ void solve_wrist(const WristFrame& w, const glm::quat& lower0, const glm::quat& 
   float tw = std::atan2(-R(1, 2), R(2, 2));
   float dev = std::asin(clampf(R(0, 2), -1.0f, 1.0f));
   float fl = std::atan2(-R(0, 1), R(0, 0));
-  *twist = clampf(tw, lim.twist_lo, lim.twist_hi);
+  *twist = clamp_limited(tw, lim.twist_lo, lim.twist_hi, previous ? &previous->twist_rad : nullptr);
   *radial = clampf(dev * w.radial_sign, -lim.ulnar_dev, lim.radial_dev);
-  *flex = clampf(fl, -lim.wrist_ext, lim.wrist_flex);
+  *flex = clamp_limited(fl, -lim.wrist_ext, lim.wrist_flex, previous ? &previous->wrist_flex_rad : nullptr);
+  if (!previous) return;
+  // On a path the wrist turns at a human speed: each angle moves at most max_step from the
+  // previous frame's. Where the request is out of reach, the clamped angles can still change
+  // branch (near deviation +-90 degrees, twist and flexion swing through half a turn between two
+  // frames: LEARN's wrist moved 12-17 cm in one frame); the wrist then turns through its range
+  // over a few frames, and the reach rounds of solve_at keep the contact point on its target.
+  *twist = clampf(*twist, previous->twist_rad - max_step, previous->twist_rad + max_step);
+  *radial = clampf(*radial, previous->wrist_dev_rad - max_step, previous->wrist_dev_rad + max_step);
+  *flex = clampf(*flex, previous->wrist_flex_rad - max_step, previous->wrist_flex_rad + max_step);
 }
 
 void compose(const WristFrame& w, const Chain& c, float twist, float radial, float flex, ArmPose* p) {
@@ -197,7 +223,7 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
   float tw = 0, rd = 0, fl = 0;
   for (int iter = 0; iter < kOrientationRounds; ++iter) {
     Chain c = solve_chain(rig, side, wrist_target, swivel);
-    solve_wrist(w, c.lower0, t.hand_delta, &tw, &rd, &fl);
+    solve_wrist(w, c.lower0, t.hand_delta, t.previous, t.max_wrist_step_rad, &tw, &rd, &fl);
     ArmPose p = consider(c, tw, rd, fl);
     glm::vec3 next = t.point - p.hand * t.contact_offset;
     float step = glm::length(next - wrist_target);

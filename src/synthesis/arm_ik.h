@@ -24,6 +24,8 @@ struct ArmLimits {
 };
 const ArmLimits& arm_limits();
 
+struct ArmPose;
+
 struct ArmTarget {
   glm::vec3 point{0.0f};            // where the contact point must go (model space)
   glm::vec3 contact_offset{0.0f};   // contact point minus wrist, hand in its bind orientation
@@ -34,6 +36,15 @@ struct ArmTarget {
   // (collision.h arm_trunk_depth); hand_contact: the hand touches the body on purpose.
   const BodyModel* body = nullptr;
   bool hand_contact = false;
+  // The same arm one frame earlier, when a path solved frame by frame must continue from it
+  // (null: solved free, as key poses are). Where the requested orientation lies beyond the
+  // forearm's or wrist's limits, a wrist angle then stays on the limit it was on instead of the
+  // one its Euler angle wraps to (LEARN's pinched hand on its way to the forehead, a request 100+
+  // degrees out of reach, flipped from full flexion to full extension in one frame, the wrist
+  // jumping 17 cm), and no wrist angle (forearm twist, deviation, flexion) changes by more than
+  // max_wrist_step_rad from the previous frame's (0: they hold).
+  const ArmPose* previous = nullptr;
+  float max_wrist_step_rad = 0.0f;
 };
 
 struct ArmPose {

@@ -641,11 +641,14 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
                 // head and the arm behind it (57 cm in a frame).
                 g.target = goal[i].target - goal[i].delta * goal[i].offset + g.delta * g.offset;
               }
-              if (plans[i].on_other_hand && op.active && (m.to_location || relocated[i])) {
+              if (plans[i].on_other_hand && op.active) {
                 // key_state leaves a hand on the other hand at the default swivel (its place is
                 // known only per frame); a goal away from that place (STUDENT: at the forehead,
                 // turning the palm in) then pulled the elbow into the body and the per-frame
-                // clearing flipped it. The swivel is chosen where the goal is.
+                // clearing flipped it. The swivel is chosen where the goal is. So is that of a
+                // goal still on the place: LEARN's change to the pinched hand on the left palm
+                // swung the elbow from its key swivel (2.0 rad) to the default 0.4, with the
+                // wrist at all its limits (orientation 71 degrees off) on the way.
                 ArmTarget t;
                 t.point = g.target + other_hand_point(solver, plans[i], op, key[1 - i], plans[i].place,
                                                       plans[i].place_finger, plans[i].place_distance_m);
@@ -789,6 +792,29 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   std::vector<std::array<float, 2>> swivel_fixes(frames.size());
   // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
   std::vector<std::array<glm::vec3, 2>> push_offsets(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
+  // A wrist that flips: where a hand's requested orientation is out of the wrist's reach, the
+  // clamped wrist angles can change branch between two frames (twist and flexion from one limit
+  // to the other: LEARN's pinched hand on its way to the forehead, the wrist 17 cm in a frame).
+  // A change of a wrist angle faster than kWristFlipRadPerS (the top of a wrist's speed: forearm
+  // rotation and wrist flexion peak at about 10-15 rad/s in fast movements; written wrist
+  // movements here turn at 3-4 rad/s; measured, 20 rad/s left GOOD's wrist jumping on the
+  // reference rig) marks a flip; that frame holds the
+  // previous frame's wrist angles (arm_ik.h ArmTarget::previous; the reach rounds keep the
+  // contact on its target), and the next ones turn from there at kWristTurnRadPerS until the
+  // free solution is within that step again (hysteresis: the wrist turns through, then joins
+  // the free solution without a jump). Frames without a flip are solved as before.
+  // kWristTurnRadPerS: 6 rad/s, an unhurried wrist turn; measured on the lexicon, 4 rad/s left
+  // LEARN's wrist so far behind its target at the forehead that the arm solve broke away (37 cm
+  // in a frame), 9 rad/s raised STUDENT's step change to 96 mm.
+  constexpr float kWristFlipRadPerS = 15.0f;
+  constexpr float kWristTurnRadPerS = 6.0f;
+  // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
+  std::vector<std::array<ArmPose, 2>> solved(frames.size());
+  std::vector<std::array<char, 2>> continued(frames.size(), {0, 0});
+  auto wrist_change = [](const ArmPose& a, const ArmPose& b) {
+    return std::max({std::fabs(a.twist_rad - b.twist_rad), std::fabs(a.wrist_dev_rad - b.wrist_dev_rad),
+                     std::fabs(a.wrist_flex_rad - b.wrist_flex_rad)});
+  };
   // `redo` (second pass): only the frames whose orientation or swivel the ramps changed are
   // solved again; the others would come out identical (every frame is solved from scratch), and
   // re-solving them doubled the time of every sign with one corrected frame.
@@ -848,6 +874,28 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         const glm::vec3 start_point = t.point;
         for (int attempt = 0; attempt < 6; ++attempt) {
           ArmPose ap = solve_arm(rig, plan.side, t);
+          if (attempt == 0) {
+            continued[f][i] = 0;
+            // Not for a contact part on the arm (DAY's elbow): it rides on the hand's contact
+            // offset, a forearm-long lever the wrist angles swing (a simplification of the
+            // solver), and continuing them there moved the wrist 38 cm in a frame.
+            const bool arm_contact = glm::dot(h.offset, rig.arms[plan.side].finger_dir) < -0.02f;
+            if (f > 0 && !arm_contact) {
+              const float step = wrist_change(ap, solved[f - 1][i]);
+              const float turn_step = kWristTurnRadPerS * speed / fps;
+              if (step > (continued[f - 1][i] ? turn_step : kWristFlipRadPerS * speed / fps)) {
+                // The pushes and the arm clearing below continue from there too (a fresh solve
+                // there would flip the wrist back: THANK-YOU).
+                t.previous = &solved[f - 1][i];
+                // Where the flip starts, the wrist holds its angles (a flip for one frame, THANK-YOU,
+                // is then no excursion at all); while it lasts, it turns through at turn_step.
+                t.max_wrist_step_rad = continued[f - 1][i] ? turn_step : 0.0f;
+                ap = solve_arm(rig, plan.side, t);
+                continued[f][i] = 1;
+              }
+            }
+            solved[f][i] = ap;
+          }
           apply_arm(rig, plan.side, ap, &pb);
           pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
           pb.finalize();

@@ -8,6 +8,8 @@
 // rotation by shortest-path slerp (never Euler blending, which flips at +-180 degrees) with the
 // minimum-jerk time law instead of equal steps, so the velocity is zero — hence continuous — where
 // the transition meets the holds of the signs. coef: docs/SYNTHESIS.md (30 states per metre).
+// L_max is measured along the path the interpolation makes the joints travel, not as the straight
+// distance between its ends (transition_path_m): coef is a speed along the hand's path.
 // When a state would pass through the body or the other hand, a via-pose (the hand pulled away
 // from the body) is inserted and the path routed through it (the seed's remedy).
 #pragma once
@@ -26,14 +28,22 @@ constexpr float kTransitionStatesPerMetre = 30.0f;
 // Fewer states cannot carry an ease-in/ease-out profile (k - 1 intermediate states).
 constexpr int kMinTransitionStates = 4;
 
-// Eq. (10): L_max over all joints (bone end points, model space) between two frames.
+// Eq. (10) as the seed writes it: L_max over all joints (bone end points, model space), the
+// straight distance between two frames.
 float transition_lmax(const Rig& rig, const glm::quat* from_locals, const glm::quat* to_locals);
+// The distance the transition really makes a bone end point travel: the longest path of any joint
+// along the direct interpolation (joint rotations slerped, sampled finely). A transition's k uses
+// it for L_max: interpolating joint rotations swings the hand along an arc, and from the rest pose
+// (arm down, palm to the thigh) up to the chest the fingertip travels 2.7 times the straight
+// distance (ME: 1.52 m for 0.57 m). With the chord, the "1 m/s mean speed" of eq. (9)'s coef was
+// really up to 2.7 m/s along the path, peaking at 16 cm per frame (5 m/s).
+float transition_path_m(const Rig& rig, const glm::quat* from_locals, const glm::quat* to_locals);
 // k = ceil(coef * L_max * fps/30 / speed), at least kMinTransitionStates.
 int transition_states(float lmax_m, float fps, float speed);
 
 struct TransitionPlan {
   int k = 0;                 // states (eq. 10); k-1 intermediate frames are produced
-  float lmax_m = 0.0f;
+  float lmax_m = 0.0f;       // eq. (10)'s L_max: the longest joint path (transition_path_m)
   int via_points = 0;
   float max_penetration_m = 0.0f;  // after routing
   std::vector<glm::quat> frames;   // (k-1) * joint_count, frame-major

@@ -54,7 +54,12 @@ TEST(SynthesisTransition, PhraseTransitionsHaveTheStateCountOfEquation10) {
   for (const auto& seg : c.segments) {
     if (seg.kind != ClipSegment::Kind::Transition) continue;
     int a = static_cast<int>(std::lround(seg.start_s * c.fps)), b = static_cast<int>(std::lround(seg.end_s * c.fps));
-    float lmax = transition_lmax(ctx.rig, &c.rotations[static_cast<size_t>(a) * J], &c.rotations[static_cast<size_t>(b) * J]);
+    // L_max along the path the joints travel (transition.h), which is never shorter than the
+    // straight distance of the seed's formula.
+    const glm::quat* from = &c.rotations[static_cast<size_t>(a) * J];
+    const glm::quat* to = &c.rotations[static_cast<size_t>(b) * J];
+    float lmax = transition_path_m(ctx.rig, from, to);
+    EXPECT_GE(lmax + 1e-4f, transition_lmax(ctx.rig, from, to)) << "transition at " << seg.start_s;
     EXPECT_EQ(b - a, transition_states(lmax, c.fps, 1.0f)) << "transition at " << seg.start_s;
     ++checked;
   }
