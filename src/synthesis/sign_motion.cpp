@@ -827,12 +827,18 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     int prev_pushes = 0;  // what the previous frame of this pass added to out->pushes
     for (int f = 0; f < out->frame_count; ++f) {
       if (redo && !(*redo)[f]) continue;
-      // A hold repeats its frame's hand states, and a frame is solved from its states alone
-      // (from scratch, nothing carried over): the frame just solved in this pass with the same
-      // states has this one's solution. Holds are a third of a sign's frames (all but one of a
-      // static sign's), each an IK solve and collision checks per hand.
-      if (f > 0 && (!redo || (*redo)[f - 1]) && same_states(frames[f], frames[f - 1])) {
+      // A hold repeats its frame's hand states, and a frame is solved from its states alone but
+      // for a wrist turning through a flip (`continued`, below): the frame just solved in this
+      // pass with the same states has this one's solution unless that frame's wrist was turning
+      // through (it moves on while the states hold). Holds are a third of a sign's frames (all
+      // but one of a static sign's), each an IK solve and collision checks per hand. A copied
+      // frame hands its first solve on to the next frame's flip check: copying without it made
+      // the next frame see a jump from a zero pose and hold a wrist that never flipped.
+      if (f > 0 && (!redo || (*redo)[f - 1]) && !continued[f - 1][0] && !continued[f - 1][1] &&
+          same_states(frames[f], frames[f - 1])) {
         std::copy_n(&out->rotations[static_cast<size_t>(f - 1) * J], J, &out->rotations[static_cast<size_t>(f) * J]);
+        solved[f] = solved[f - 1];
+        continued[f] = continued[f - 1];
         out->exempt[f] = exempt;
         turns[f] = turns[f - 1];
         swivel_fixes[f] = swivel_fixes[f - 1];
