@@ -16,6 +16,10 @@ const MAX_PIXEL_RATIO = 2;
 // tail of the per-frame time. Two, not one: a fence's status reaches the page a task after the
 // GPU signals it, so with one a fast GPU would lose every other frame.
 const MAX_FRAMES_IN_FLIGHT = 2;
+// Vertex buffer sets written in turn (setMesh). A pose is uploaded only when fewer than
+// MAX_FRAMES_IN_FLIGHT frames are unfinished (gpuCaughtUp), i.e. at most the newest one, which
+// draws from the current set: the other set is free. Fences finish in order, so two sets suffice.
+const VERTEX_SLOTS = MAX_FRAMES_IN_FLIGHT;
 
 export class WebGL2Unavailable extends Error {}
 
@@ -98,45 +102,57 @@ export class Renderer {
   }
 
   // Static data, uploaded once per avatar: indices and materials; the vertex buffers are allocated
-  // here and refilled every frame by upload().
+  // here and refilled every frame by upload(). Two sets of them (VERTEX_SLOTS), written in turn:
+  // a pose is never written into the buffers the frame still in flight draws from, which could
+  // make the upload wait for the GPU (ANGLE/SwiftShader copies or stalls on an in-use buffer).
   setMesh({ vertexCount, indices, primitives, materials }) {
     const gl = this.gl;
     if (this.mesh) {
-      gl.deleteVertexArray(this.mesh.vao);
-      gl.deleteBuffer(this.mesh.positions);
-      gl.deleteBuffer(this.mesh.normals);
+      for (const slot of this.mesh.slots) {
+        gl.deleteVertexArray(slot.vao);
+        gl.deleteBuffer(slot.positions);
+        gl.deleteBuffer(slot.normals);
+      }
       gl.deleteBuffer(this.mesh.indices);
     }
-    const vao = gl.createVertexArray();
-    gl.bindVertexArray(vao);
-    const positions = gl.createBuffer();
-    gl.bindBuffer(gl.ARRAY_BUFFER, positions);
-    gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
-    gl.enableVertexAttribArray(0);
-    gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
-    const normals = gl.createBuffer();
-    gl.bindBuffer(gl.ARRAY_BUFFER, normals);
-    gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
-    gl.enableVertexAttribArray(1);
-    gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 0, 0);
     const indexBuffer = gl.createBuffer();
-    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indexBuffer);
-    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
+    const slots = [];
+    for (let i = 0; i < VERTEX_SLOTS; i++) {
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      const positions = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, positions);
+      gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
+      gl.enableVertexAttribArray(0);
+      gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+      const normals = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, normals);
+      gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
+      gl.enableVertexAttribArray(1);
+      gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 0, 0);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indexBuffer);   // part of the VAO's state
+      if (i === 0) gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
+      slots.push({ vao, positions, normals });
+    }
     gl.bindVertexArray(null);
     const drawn = primitives.length ? primitives : [{ first_index: 0, index_count: indices.length, material: 0 }];
     this.mesh = {
-      vao, positions, normals, indices: indexBuffer, vertexCount,
+      slots, current: 0, indices: indexBuffer, vertexCount,
       primitives: drawn.map((p) => ({ ...p, look: lookOf(materials[p.material]) })),
     };
   }
 
-  // Per frame: the core's skinned positions/normals, as views onto WASM memory (no copy).
+  // Per pose: the core's skinned positions/normals, as views onto WASM memory (no copy), into the
+  // slot after the one last drawn; later frames draw from it until the next pose.
   upload(positionsView, normalsView) {
     if (!this.mesh) return;
     const gl = this.gl;
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.mesh.positions);
+    const mesh = this.mesh;
+    mesh.current = (mesh.current + 1) % mesh.slots.length;
+    const slot = mesh.slots[mesh.current];
+    gl.bindBuffer(gl.ARRAY_BUFFER, slot.positions);
     gl.bufferSubData(gl.ARRAY_BUFFER, 0, positionsView);
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.mesh.normals);
+    gl.bindBuffer(gl.ARRAY_BUFFER, slot.normals);
     gl.bufferSubData(gl.ARRAY_BUFFER, 0, normalsView);
   }
 
@@ -226,7 +242,7 @@ export class Renderer {
     gl.uniform3f(u.uGround, 0.26, 0.24, 0.22);
     // No back-face culling: the face has open surfaces (mouth, eyelids) seen from both sides.
     gl.disable(gl.CULL_FACE);
-    gl.bindVertexArray(this.mesh.vao);
+    gl.bindVertexArray(this.mesh.slots[this.mesh.current].vao);
     for (const p of this.mesh.primitives) {
       const look = p.look;
       gl.uniform4fv(u.uBaseColor, look.baseColor);
