@@ -535,7 +535,10 @@ function frame(now) {
     }
     renderer.draw(camera, { showDebug: debugVisible });
     metrics.frames++;
-    if (markTime('first-avatar-frame') === null) mark('first-avatar-frame');
+    if (markTime('first-avatar-frame') === null) {
+      mark('first-avatar-frame');
+      renderer.startDeferredPrograms();
+    }
     if (metrics.firstSigningFrame_ms === null && playback.playing && playback.time_s > 0) {
       metrics.firstSigningFrame_ms = mark('first-signing-frame');
       measureStartup();

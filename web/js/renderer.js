@@ -51,7 +51,10 @@ export class Renderer {
     this.background = startProgram(gl, S.BACKGROUND_VS, S.BACKGROUND_FS);
     this.floor = startProgram(gl, S.FLOOR_VS, S.FLOOR_FS);
     this.avatar = startProgram(gl, S.AVATAR_VS, S.AVATAR_FS);
-    this.debug = startProgram(gl, S.DEBUG_VS, S.DEBUG_FS);
+    // The skeleton overlay's program is not needed for the first frame: it is compiled once that
+    // frame is drawn (startDeferredPrograms), so it does not share the GPU process with the three
+    // the first frame waits for (measured: programs still linking when the avatar was loaded).
+    this.debug = null;
     this.emptyVao = gl.createVertexArray();
     this.floorVao = gl.createVertexArray();
     gl.bindVertexArray(this.floorVao);
@@ -79,7 +82,7 @@ export class Renderer {
   // True when every program has linked. Where KHR_parallel_shader_compile exists this asks without
   // waiting; elsewhere it is false until finishPrograms() has run (so nothing waits by accident).
   programsReady() {
-    const all = [this.background, this.floor, this.avatar, this.debug];
+    const all = this.firstFramePrograms();
     if (all.every((p) => p.u)) return true;
     const done = this.parallelCompile?.COMPLETION_STATUS_KHR;
     return !!done && all.every((p) => p.u || this.gl.getProgramParameter(p.program, done));
@@ -87,7 +90,19 @@ export class Renderer {
 
   // Waits for every program (if still building) and checks it: throws the compile or link error.
   finishPrograms() {
-    for (const p of [this.background, this.floor, this.avatar, this.debug]) finishProgram(this.gl, p);
+    for (const p of this.firstFramePrograms()) finishProgram(this.gl, p);
+  }
+
+  firstFramePrograms() {
+    return [this.background, this.floor, this.avatar];
+  }
+
+  // Starts compiling what the first frame did not need (the skeleton overlay); at the latest when
+  // the overlay is first drawn.
+  startDeferredPrograms() {
+    if (this.debug) return;
+    this.debug = startProgram(this.gl, S.DEBUG_VS, S.DEBUG_FS);
+    this.gl.flush();
   }
 
   // False while the GPU is still working through MAX_FRAMES_IN_FLIGHT earlier frames: then the
@@ -256,6 +271,7 @@ export class Renderer {
   drawDebug(camera) {
     const gl = this.gl;
     if (!this.debugLines) return;
+    this.startDeferredPrograms();
     const { u } = finishProgram(gl, this.debug);
     gl.disable(gl.DEPTH_TEST);   // the skeleton is inside the body: draw it on top
     gl.useProgram(this.debug.program);
