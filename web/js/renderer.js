@@ -13,12 +13,16 @@ const MAX_PIXEL_RATIO = 2;
 // Frames the GPU may be behind before the page stops sending new ones. Past that, uploading the
 // next pose makes the main thread wait for the GPU process (bufferSubData and the command-buffer
 // flush block once their buffers are full): on SwiftShader under load that wait was the whole
-// tail of the per-frame time. Two, not one: a fence's status reaches the page a task after the
-// GPU signals it, so with one a fast GPU would lose every other frame.
-const MAX_FRAMES_IN_FLIGHT = 2;
+// tail of the per-frame time. One: measured over 5 cold loads each at load 7-9, with two the
+// upload's p95 was 1.4-1.9 ms (frame work p95 1.7-2.6 ms), with one 0.3 ms (frame work 1.0 ms),
+// while the frames drawn were 142 against 142 and 171 (5 x 5 s; SwiftShader is the limit). A
+// frame the GPU finishes within the frame interval is not skipped: Chrome re-reads a fence's
+// status (a query, no round trip) at the first getSyncParameter of the next task, which is the
+// next frame's gpuCaughtUp.
+const MAX_FRAMES_IN_FLIGHT = 1;
 // Vertex buffer sets written in turn (setMesh). A pose is uploaded only when fewer than
-// MAX_FRAMES_IN_FLIGHT frames are unfinished (gpuCaughtUp), i.e. at most the newest one, which
-// draws from the current set: the other set is free. Fences finish in order, so two sets suffice.
+// MAX_FRAMES_IN_FLIGHT frames are unfinished (gpuCaughtUp): those draw from the sets written
+// before, so the next set in turn is free. Fences finish in order.
 const VERTEX_SLOTS = MAX_FRAMES_IN_FLIGHT;
 
 export class WebGL2Unavailable extends Error {}
