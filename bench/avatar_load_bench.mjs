@@ -6,7 +6,9 @@
 // measurements of the avatar), in a module of its own; node shares the compiled code of one
 // flavour between its instances, so that "cold" figure is not cold (it is not the page's cost). Process CPU time too:
 // the machine is shared, and wall time then counts the neighbours. bench/avatar_load_bench.cpp is
-// the native twin with the parts split.
+// the native twin with the parts split. `player_pack` is Player.loadAvatar on the avatar pack the
+// page downloads instead (web/gen/signweave-avatar.swavatar, src/avatar/avatar_pack.h), in the same
+// module as `player_` (so only its warm figure compares).
 import { existsSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 
@@ -14,16 +16,18 @@ import { ROOT } from '../tests/node/wasm_loader.mjs';
 import { FLAVOURS, loadCore, printResult } from './wasm_common.mjs';
 
 const modelPath = path.join(ROOT, 'models', 'signweave-avatar.glb');
+const packPath = path.join(ROOT, 'web', 'gen', 'signweave-avatar.swavatar');
 const WARM_RUNS = 7;
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
-for (const [flavour, api] of FLAVOURS.flatMap((f) => [[f, 'core'], [f, 'player']])) {
+for (const [flavour, api] of FLAVOURS.flatMap((f) => [[f, 'core'], [f, 'player'], [f, 'pack']])) {
   const core = await loadCore(flavour);
-  const player = api === 'player' ? new core.Player() : null;
-  const real = existsSync(modelPath);
-  const bytes = real ? new Uint8Array(readFileSync(modelPath)) : null;
+  const player = api !== 'core' ? new core.Player() : null;
+  const file = api === 'pack' ? packPath : modelPath;
+  const real = existsSync(file);
+  const bytes = real ? new Uint8Array(readFileSync(file)) : null;
   if (player && !real) continue;  // the Player takes bytes: without the real avatar, nothing to give it
-  const label = (api === 'player' ? 'player_' : '') + (real ? 'avatar' : 'synthetic');
+  const label = { core: '', player: 'player_', pack: 'player_pack_' }[api] + (real ? 'avatar' : 'synthetic');
   const load = player ? () => {
     const error = player.loadAvatar(bytes);
     if (error) throw new Error(error);

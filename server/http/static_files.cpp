@@ -34,10 +34,14 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
+// The page's avatar pack (src/avatar/avatar_pack.h, built into web/gen/): floats and indices,
+// about half its size gzipped, like the .glb it is made from.
+const char* const kAvatarPackMime = "application/vnd.signweave.avatar-pack";
+
 bool is_compressible(const std::string& mime) {
   return mime.rfind("text/", 0) == 0 || mime.rfind("application/json", 0) == 0 ||
          mime == "application/wasm" || mime == "image/svg+xml" || mime == "model/gltf+json" ||
-         mime == "model/gltf-binary" || mime == "application/xml";
+         mime == "model/gltf-binary" || mime == "application/xml" || mime == kAvatarPackMime;
 }
 
 bool gzip_compress(const std::string& input, std::string* output) {
@@ -105,6 +109,7 @@ std::string mime_type_for(const std::string& path) {
       {"map", "application/json"},            {"webmanifest", "application/manifest+json"},
       {"xml", "application/xml"},             {"sigml", "application/xml"},
       {"jsonl", "application/x-ndjson"},      {"bvh", "text/plain; charset=utf-8"},
+      {"swavatar", kAvatarPackMime},
   };
   auto found = kTypes.find(extension_of(path));
   return found != kTypes.end() ? found->second : "application/octet-stream";

@@ -1,6 +1,7 @@
 // Signing avatar: load + anchors + rig check (signing_avatar.h).
 #include "synthesis/signing_avatar.h"
 
+#include "avatar/avatar_pack.h"
 #include "avatar/body_anchors.h"
 #include "avatar/gltf_loader.h"
 #include "synthesis/rig.h"
@@ -25,6 +26,15 @@ static SigningAvatar from_load(avatar::LoadResult&& r) {
 }
 
 SigningAvatar load_signing_avatar(const std::uint8_t* bytes, std::size_t size) {
+  if (avatar::is_avatar_pack(bytes, size)) {
+    // Packed at build time with its anchors (avatar/avatar_pack.h): only the rig is checked here.
+    avatar::UnpackResult r = avatar::unpack_avatar(bytes, size);
+    SigningAvatar a;
+    a.error = std::move(r.error);
+    a.avatar = std::move(r.avatar);
+    prepare_signing_avatar(&a);
+    return a;
+  }
   return from_load(avatar::load_avatar(bytes, size));
 }
 

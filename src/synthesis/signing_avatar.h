@@ -1,6 +1,7 @@
 // Signing avatar: an avatar ready for synthesis — loaded from glTF bytes or a file by the avatar
-// loader, with its body anchors computed (avatar/body_anchors.h) when the file carries none, and
-// checked for the joints synthesis needs. The CLI, the WASM API and the server load through here.
+// loader (or from an avatar pack, avatar/avatar_pack.h, told apart by its magic), with its body
+// anchors computed (avatar/body_anchors.h) when the file carries none, and checked for the joints
+// synthesis needs. The CLI, the WASM API and the server load through here.
 #pragma once
 
 #include <cstddef>

@@ -40,6 +40,7 @@ export function missingPrerequisites() {
     if (!fs.existsSync(path.join(ROOT, 'web', 'gen', f))) missing.push(`web/gen/${f} (./signweave build)`);
   }
   if (!fs.existsSync(path.join(ROOT, 'models', 'signweave-avatar.glb'))) missing.push('models/signweave-avatar.glb');
+  if (!fs.existsSync(path.join(ROOT, 'web', 'gen', 'signweave-avatar.swavatar'))) missing.push('web/gen/signweave-avatar.swavatar (./signweave build)');
   return missing;
 }
 

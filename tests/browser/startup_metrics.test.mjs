@@ -66,10 +66,38 @@ test('the start-up timeline is exposed, complete and ordered from navigation to 
     for (const span of ['wasm-download-and-compile', 'avatar-parse', 'sign-fetch', 'synthesis']) assert.ok(span in measures, `span ${span}`);
 
     // The waterfall: the core and the avatar were requested before either had finished arriving.
+    // The avatar comes as the pack ./signweave build makes (src/avatar/avatar_pack.h), not as glTF.
     const wasm = resources.find((x) => /^gen\/signweave-(simd|scalar)\.wasm$/.test(x.name));
-    const glb = resources.find((x) => x.name === 'models/signweave-avatar.glb');
-    assert.ok(wasm && glb, `resources: ${resources.map((x) => x.name).join(', ')}`);
-    assert.ok(glb.start_ms <= wasm.end_ms && wasm.start_ms <= glb.end_ms, `downloads overlap: wasm ${wasm.start_ms}–${wasm.end_ms}, avatar ${glb.start_ms}–${glb.end_ms}`);
+    const avatar = resources.find((x) => x.name === 'gen/signweave-avatar.swavatar');
+    assert.ok(wasm && avatar, `resources: ${resources.map((x) => x.name).join(', ')}`);
+    assert.ok(!resources.some((x) => x.name === 'models/signweave-avatar.glb'), 'the .glb is not downloaded beside the pack');
+    assert.ok(avatar.start_ms <= wasm.end_ms && wasm.start_ms <= avatar.end_ms, `downloads overlap: wasm ${wasm.start_ms}–${wasm.end_ms}, avatar ${avatar.start_ms}–${avatar.end_ms}`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('without the avatar pack (a server lacking the generated files) the page loads the .glb and signs', async () => {
+  const context = await browser.newContext({ viewport: { width: 1000, height: 700 } });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  await page.route('**/gen/signweave-avatar.swavatar', (route) => route.fulfill({ status: 404, body: 'not found' }));
+  try {
+    const list = await (await fetch(`${server.base}/api/signs?q=&limit=1`)).json();
+    await page.goto(`${server.base}/#/sign/${encodeURIComponent(list.hits[0].id)}`);
+    await page.waitForFunction(() => window.signweave?.metrics.firstSigningFrame_ms !== null || window.signweave?.state.error,
+      null, { timeout: 60_000 });
+    const r = await page.evaluate(() => ({
+      error: window.signweave.state.error,
+      vertices: window.signweave.core?.info?.vertex_count,
+      anchors: window.signweave.core?.info?.anchors?.length,
+      resources: window.signweave.metrics.startup.resources.map((x) => x.name),
+    }));
+    assert.equal(r.error, null);
+    assert.ok(r.resources.includes('models/signweave-avatar.glb'), `resources: ${r.resources.join(', ')}`);
+    assert.ok(r.vertices > 1000 && r.anchors > 50, `the glTF avatar loaded with its anchors computed: ${JSON.stringify(r)}`);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

@@ -31,6 +31,11 @@ before(async () => {
   fs.writeFileSync(path.join(dir, 'outside.txt'), 'outside the web root');
   fs.symlinkSync(path.join(dir, 'outside.txt'), path.join(web, 'link-out.txt'));
   fs.writeFileSync(path.join(models, 'avatar.glb'), Buffer.from('glTF\x02\x00\x00\x00'));
+  // An avatar pack (src/avatar/avatar_pack.h): floats that gzip about in half, like the .glb.
+  const pack = Buffer.alloc(4096);
+  pack.write('SWAVPACK');
+  for (let i = 12; i + 4 <= pack.length; i += 4) pack.writeFloatLE(Math.round(Math.sin(i) * 100) / 100, i);
+  fs.writeFileSync(path.join(web, 'gen', 'avatar.swavatar'), pack);
   // The server validates signs on the real avatar from the models directory.
   fs.copyFileSync(path.join(repoRoot, 'models', 'signweave-avatar.glb'), path.join(models, 'signweave-avatar.glb'));
   server = await startServer({ dir, web, models });
@@ -52,7 +57,8 @@ function rawGet(rawPath, headers = {}) {
 
 test('MIME types the page depends on', async () => {
   const cases = [['/', 'text/html'], ['/app.js', 'text/javascript'], ['/mod.mjs', 'text/javascript'],
-    ['/gen/core.wasm', 'application/wasm'], ['/models/avatar.glb', 'model/gltf-binary']];
+    ['/gen/core.wasm', 'application/wasm'], ['/models/avatar.glb', 'model/gltf-binary'],
+    ['/gen/avatar.swavatar', 'application/vnd.signweave.avatar-pack']];
   for (const [url, type] of cases) {
     const response = await rawGet(url);
     assert.equal(response.status, 200, url);
@@ -95,7 +101,7 @@ test('static files are gzipped at start-up: no request waits for zlib, repeat by
   };
   const before = await metric();
   // The real avatar and a page script, never asked for with gzip before this test.
-  for (const url of ['/models/signweave-avatar.glb', '/mod.mjs']) {
+  for (const url of ['/models/signweave-avatar.glb', '/mod.mjs', '/gen/avatar.swavatar']) {
     const first = await rawGet(url, { 'Accept-Encoding': 'gzip' });
     const second = await rawGet(url, { 'Accept-Encoding': 'gzip' });
     assert.equal(first.status, 200, url);

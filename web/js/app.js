@@ -20,7 +20,11 @@ import { mark, markTime, measure, startupBreakdown } from './startup_metrics.js'
 
 mark('app-start');
 
-const AVATAR_URL = 'models/signweave-avatar.glb';
+// The avatar as a pack (src/avatar/avatar_pack.h; ./signweave build makes it from the .glb, body
+// anchors included): the core reads it by copying arrays, where the .glb would run the glTF parser
+// on this thread while the browser is still compiling that code (0.5-1.3 s measured). The .glb
+// itself is the fallback when the pack is missing (a server without the generated files).
+const AVATAR_URLS = ['gen/signweave-avatar.swavatar', 'models/signweave-avatar.glb'];
 const $ = (id) => document.getElementById(id);
 
 const metrics = {
@@ -109,8 +113,12 @@ function setProgress(fraction, text) {
 }
 
 // ------------------------------------------------------------------------------------ loading
-async function fetchWithProgress(url, onFraction) {
-  const response = await fetch(url);
+async function fetchWithProgress(urls, onFraction) {
+  let url, response;
+  for (url of urls) {
+    response = await fetch(url);
+    if (response.status !== 404) break;   // anything else is this file's error, not a missing file
+  }
   if (!response.ok) throw new Error(`${url}: ${response.status} ${response.statusText}`);
   // A gzip response's Content-Length is the compressed size, while the stream yields decompressed
   // bytes: only an identity response measures progress.
@@ -168,7 +176,7 @@ async function boot() {
   let coreFraction = 0, avatarFraction = 0;
   const progress = () => setProgress(0.5 * coreFraction + 0.5 * avatarFraction, 'Loading the signer…');
   const corePromise = SigningCore.create({ onProgress: (f) => { coreFraction = f; progress(); } });
-  const avatarPromise = fetchWithProgress(AVATAR_URL, (f) => { avatarFraction = f; progress(); })
+  const avatarPromise = fetchWithProgress(AVATAR_URLS, (f) => { avatarFraction = f; progress(); })
     .then((bytes) => { mark('avatar-fetched'); return bytes; });
   prefetchRoutedSign();
   // The dictionary needs no 3D view: languages load whatever happens to WebGL2 or the core.
@@ -527,7 +535,10 @@ function frame(now) {
     }
     renderer.draw(camera, { showDebug: debugVisible });
     metrics.frames++;
-    if (markTime('first-avatar-frame') === null) mark('first-avatar-frame');
+    if (markTime('first-avatar-frame') === null) {
+      mark('first-avatar-frame');
+      renderer.startDeferredPrograms();
+    }
     if (metrics.firstSigningFrame_ms === null && playback.playing && playback.time_s > 0) {
       metrics.firstSigningFrame_ms = mark('first-signing-frame');
       measureStartup();

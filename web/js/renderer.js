@@ -13,9 +13,17 @@ const MAX_PIXEL_RATIO = 2;
 // Frames the GPU may be behind before the page stops sending new ones. Past that, uploading the
 // next pose makes the main thread wait for the GPU process (bufferSubData and the command-buffer
 // flush block once their buffers are full): on SwiftShader under load that wait was the whole
-// tail of the per-frame time. Two, not one: a fence's status reaches the page a task after the
-// GPU signals it, so with one a fast GPU would lose every other frame.
-const MAX_FRAMES_IN_FLIGHT = 2;
+// tail of the per-frame time. One: measured over 5 cold loads each at load 7-9, with two the
+// upload's p95 was 1.4-1.9 ms (frame work p95 1.7-2.6 ms), with one 0.3 ms (frame work 1.0 ms),
+// while the frames drawn were 142 against 142 and 171 (5 x 5 s; SwiftShader is the limit). A
+// frame the GPU finishes within the frame interval is not skipped: Chrome re-reads a fence's
+// status (a query, no round trip) at the first getSyncParameter of the next task, which is the
+// next frame's gpuCaughtUp.
+const MAX_FRAMES_IN_FLIGHT = 1;
+// Vertex buffer sets written in turn (setMesh). A pose is uploaded only when fewer than
+// MAX_FRAMES_IN_FLIGHT frames are unfinished (gpuCaughtUp): those draw from the sets written
+// before, so the next set in turn is free. Fences finish in order.
+const VERTEX_SLOTS = MAX_FRAMES_IN_FLIGHT;
 
 export class WebGL2Unavailable extends Error {}
 
@@ -47,7 +55,10 @@ export class Renderer {
     this.background = startProgram(gl, S.BACKGROUND_VS, S.BACKGROUND_FS);
     this.floor = startProgram(gl, S.FLOOR_VS, S.FLOOR_FS);
     this.avatar = startProgram(gl, S.AVATAR_VS, S.AVATAR_FS);
-    this.debug = startProgram(gl, S.DEBUG_VS, S.DEBUG_FS);
+    // The skeleton overlay's program is not needed for the first frame: it is compiled once that
+    // frame is drawn (startDeferredPrograms), so it does not share the GPU process with the three
+    // the first frame waits for (measured: programs still linking when the avatar was loaded).
+    this.debug = null;
     this.emptyVao = gl.createVertexArray();
     this.floorVao = gl.createVertexArray();
     gl.bindVertexArray(this.floorVao);
@@ -75,7 +86,7 @@ export class Renderer {
   // True when every program has linked. Where KHR_parallel_shader_compile exists this asks without
   // waiting; elsewhere it is false until finishPrograms() has run (so nothing waits by accident).
   programsReady() {
-    const all = [this.background, this.floor, this.avatar, this.debug];
+    const all = this.firstFramePrograms();
     if (all.every((p) => p.u)) return true;
     const done = this.parallelCompile?.COMPLETION_STATUS_KHR;
     return !!done && all.every((p) => p.u || this.gl.getProgramParameter(p.program, done));
@@ -83,7 +94,19 @@ export class Renderer {
 
   // Waits for every program (if still building) and checks it: throws the compile or link error.
   finishPrograms() {
-    for (const p of [this.background, this.floor, this.avatar, this.debug]) finishProgram(this.gl, p);
+    for (const p of this.firstFramePrograms()) finishProgram(this.gl, p);
+  }
+
+  firstFramePrograms() {
+    return [this.background, this.floor, this.avatar];
+  }
+
+  // Starts compiling what the first frame did not need (the skeleton overlay); at the latest when
+  // the overlay is first drawn.
+  startDeferredPrograms() {
+    if (this.debug) return;
+    this.debug = startProgram(this.gl, S.DEBUG_VS, S.DEBUG_FS);
+    this.gl.flush();
   }
 
   // False while the GPU is still working through MAX_FRAMES_IN_FLIGHT earlier frames: then the
@@ -98,45 +121,57 @@ export class Renderer {
   }
 
   // Static data, uploaded once per avatar: indices and materials; the vertex buffers are allocated
-  // here and refilled every frame by upload().
+  // here and refilled every frame by upload(). Two sets of them (VERTEX_SLOTS), written in turn:
+  // a pose is never written into the buffers the frame still in flight draws from, which could
+  // make the upload wait for the GPU (ANGLE/SwiftShader copies or stalls on an in-use buffer).
   setMesh({ vertexCount, indices, primitives, materials }) {
     const gl = this.gl;
     if (this.mesh) {
-      gl.deleteVertexArray(this.mesh.vao);
-      gl.deleteBuffer(this.mesh.positions);
-      gl.deleteBuffer(this.mesh.normals);
+      for (const slot of this.mesh.slots) {
+        gl.deleteVertexArray(slot.vao);
+        gl.deleteBuffer(slot.positions);
+        gl.deleteBuffer(slot.normals);
+      }
       gl.deleteBuffer(this.mesh.indices);
     }
-    const vao = gl.createVertexArray();
-    gl.bindVertexArray(vao);
-    const positions = gl.createBuffer();
-    gl.bindBuffer(gl.ARRAY_BUFFER, positions);
-    gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
-    gl.enableVertexAttribArray(0);
-    gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
-    const normals = gl.createBuffer();
-    gl.bindBuffer(gl.ARRAY_BUFFER, normals);
-    gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
-    gl.enableVertexAttribArray(1);
-    gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 0, 0);
     const indexBuffer = gl.createBuffer();
-    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indexBuffer);
-    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
+    const slots = [];
+    for (let i = 0; i < VERTEX_SLOTS; i++) {
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      const positions = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, positions);
+      gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
+      gl.enableVertexAttribArray(0);
+      gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+      const normals = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, normals);
+      gl.bufferData(gl.ARRAY_BUFFER, vertexCount * 12, gl.DYNAMIC_DRAW);
+      gl.enableVertexAttribArray(1);
+      gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 0, 0);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indexBuffer);   // part of the VAO's state
+      if (i === 0) gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
+      slots.push({ vao, positions, normals });
+    }
     gl.bindVertexArray(null);
     const drawn = primitives.length ? primitives : [{ first_index: 0, index_count: indices.length, material: 0 }];
     this.mesh = {
-      vao, positions, normals, indices: indexBuffer, vertexCount,
+      slots, current: 0, indices: indexBuffer, vertexCount,
       primitives: drawn.map((p) => ({ ...p, look: lookOf(materials[p.material]) })),
     };
   }
 
-  // Per frame: the core's skinned positions/normals, as views onto WASM memory (no copy).
+  // Per pose: the core's skinned positions/normals, as views onto WASM memory (no copy), into the
+  // slot after the one last drawn; later frames draw from it until the next pose.
   upload(positionsView, normalsView) {
     if (!this.mesh) return;
     const gl = this.gl;
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.mesh.positions);
+    const mesh = this.mesh;
+    mesh.current = (mesh.current + 1) % mesh.slots.length;
+    const slot = mesh.slots[mesh.current];
+    gl.bindBuffer(gl.ARRAY_BUFFER, slot.positions);
     gl.bufferSubData(gl.ARRAY_BUFFER, 0, positionsView);
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.mesh.normals);
+    gl.bindBuffer(gl.ARRAY_BUFFER, slot.normals);
     gl.bufferSubData(gl.ARRAY_BUFFER, 0, normalsView);
   }
 
@@ -226,7 +261,7 @@ export class Renderer {
     gl.uniform3f(u.uGround, 0.26, 0.24, 0.22);
     // No back-face culling: the face has open surfaces (mouth, eyelids) seen from both sides.
     gl.disable(gl.CULL_FACE);
-    gl.bindVertexArray(this.mesh.vao);
+    gl.bindVertexArray(this.mesh.slots[this.mesh.current].vao);
     for (const p of this.mesh.primitives) {
       const look = p.look;
       gl.uniform4fv(u.uBaseColor, look.baseColor);
@@ -240,6 +275,7 @@ export class Renderer {
   drawDebug(camera) {
     const gl = this.gl;
     if (!this.debugLines) return;
+    this.startDeferredPrograms();
     const { u } = finishProgram(gl, this.debug);
     gl.disable(gl.DEPTH_TEST);   // the skeleton is inside the body: draw it on top
     gl.useProgram(this.debug.program);
