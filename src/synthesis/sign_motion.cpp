@@ -159,7 +159,20 @@ struct Solver {
       *target = p.point + 0.3f * rig.forward;
       return true;
     }
-    *target = p.point + contact_distance(loc.contact, false) * glm::normalize(p.normal);
+    glm::vec3 away = glm::normalize(p.normal);
+    // A hand beside the FAR side of the body (the right hand at `left_beside`) is held off it in
+    // front, angled back in towards the middle: the other arm hangs at that side, and the crossing
+    // arm reaches the place round the front of the chest. Held off sideways (the anchor's normal
+    // on a rig whose `*_beside` normal points out) the hand is level with the chest's mid-plane
+    // and the upper arm goes through the torso (40-80 mm on the reference humanoid). The slant
+    // (half as much inwards as forwards) is measured: straight forward, or as much inwards as
+    // forwards, leaves the key poses at the chest 2-3 mm deeper.
+    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
+    if (seen == (plan.side == kRight ? notation::Side::LeftBeside : notation::Side::RightBeside)) {
+      const glm::vec3 across = plan.side == kRight ? rig.left : -rig.left;  // to the far side
+      away = glm::normalize(rig.forward - 0.5f * across);
+    }
+    *target = p.point + contact_distance(loc.contact, false) * away;
     return true;
   }
 
