@@ -355,13 +355,14 @@ void crossing_arm_depths(const SynthContext& ctx, const SynthesisResult& r, Side
   }
 }
 
-// The dominant hand beside the FAR side of the body (`left_beside`: shoulder top, shoulders,
-// chest, stomach, belly; touch, close and no contact; a flat hand, fingers up, palm in): the arm
-// reaches round the front of the chest (the place held off in front, the shoulder girdle
-// protracted) instead of through the torso. Before that the upper arm was 40-83 mm in the torso
-// in the key poses on the reference humanoid and 13-22 mm on the project avatar, and the
-// transitions from and back to rest cut through by 100-137 mm (now the clip's worst frame is the
-// key pose's). Bounds: 5 mm (the rule) except where measured deeper, rounded up, per rig.
+// The dominant hand beside the FAR side of the body (`left_beside` from the forehead to the
+// belly; touch, close and no contact; a flat hand, fingers up, palm in): the arm reaches round
+// the front of the chest (the place held off in front, the shoulder girdle protracted) instead
+// of through the torso. Before that, in the key poses, the upper arm was 22-83 mm in the torso
+// at the shoulders to the belly on the reference humanoid (8-24 mm at the face and neck) and
+// 13-22 mm on the project avatar, and the transitions from and back to rest cut through by
+// 95-131 mm (now each clip's worst frame is its key pose's). Bounds: 5 mm (the rule) except
+// where measured deeper, rounded up, per rig. Waist and below are known gaps (docs/SYNTHESIS.md).
 TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
   struct Bounds { float close_mm, none_mm; };  // key pose and clip; touch: 5 mm everywhere
   struct Rig_ {
@@ -381,8 +382,10 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
     // the hand held off above it; the protraction fades out above the shoulder).
     rigs.push_back({"avatar", std::move(sa.avatar), {{BodyLevel::ShoulderTop, {8.0f, 6.0f}}}});
   }
-  const BodyLevel levels[] = {BodyLevel::ShoulderTop, BodyLevel::Shoulders, BodyLevel::Chest,
-                              BodyLevel::Stomach, BodyLevel::Belly};
+  const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,      BodyLevel::Mouth,
+                              BodyLevel::Chin,     BodyLevel::Neck,      BodyLevel::Shoulders,
+                              BodyLevel::ShoulderTop, BodyLevel::Chest,  BodyLevel::Stomach,
+                              BodyLevel::Belly};
   float worst_key = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
