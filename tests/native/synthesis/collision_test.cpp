@@ -276,8 +276,8 @@ TEST(SynthesisCollision, ArmInsideTheTorsoIsDetectedAndTheRestPoseIsClean) {
 // Hands at the places across the body (the non-dominant side), where the forearm crosses the
 // chest and the elbow could sink into the torso: the arm stays out of the trunk by 5 mm, with
 // touch and close contact, three hand configurations, on the reference humanoid and the
-// re-rigged variant (all places) and on the project's avatar (the places it passes; the rest,
-// and the `left_beside` places on every rig, are the known gaps in docs/SYNTHESIS.md).
+// re-rigged variant (all places) and on the project's avatar (the places it passes; the rest are
+// known gaps in docs/SYNTHESIS.md). The `left_beside` places: HandBesideTheFarSide... below.
 TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
   struct Place { BodyLevel level; Side side; };
   const std::vector<Place> all_places = {
