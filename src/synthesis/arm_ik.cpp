@@ -97,7 +97,21 @@ Chain solve_chain(const Rig& rig, Side side, const glm::vec3& wrist_target, floa
     float height = glm::dot(v, rig.up) / (l1 + l2);
     float fwd = std::max(0.0f, glm::dot(safe_normalize(v, rig.forward), rig.forward));
     c.elevation = clampf(0.6f * (height + 0.15f), 0.0f, lim.clavicle_elevation);
-    c.protraction = clampf(1.2f * (reach - 0.75f) * fwd, 0.0f, lim.clavicle_protraction);
+    // Across the body (a hand beside the far side of the chest, belly or shoulder): the upper arm
+    // adducts across the chest, and the shoulder girdle protracts with it (horizontal adduction
+    // takes the scapula forward round the ribcage), bringing the shoulder joint forward so that
+    // the upper arm passes in front of the chest, not through it. Only for wrists far across
+    // (from 52% of the arm's reach medial of the shoulder joint, full protraction from 56%: a
+    // steep onset measured better than a gradual one, which leaves the shoulder back for the
+    // nearer far-side places; from 50% it also moves THANK-YOU's wrist at the chin),
+    // near the body's depth (full up to 18% of the reach in front of the shoulder, none beyond
+    // 27%) and not above the shoulder (full from 20% below it, none from 10% above): a hand far
+    // in front, at the face or over the head crosses with the arm alone.
+    const float medial = glm::dot(v, -out_dir) / (l1 + l2);
+    const float near_body = clampf((0.27f - glm::dot(v, rig.forward) / (l1 + l2)) / 0.09f, 0.0f, 1.0f);
+    const float not_above = clampf((0.1f - height) / 0.3f, 0.0f, 1.0f);
+    const float across = 8.0f * (medial - 0.52f) * near_body * not_above;
+    c.protraction = clampf(std::max(1.2f * (reach - 0.75f) * fwd, across), 0.0f, lim.clavicle_protraction);
     c.shoulder = axis_angle(bind.prot_axis, c.protraction) * axis_angle(bind.elev_axis, c.elevation);
     shoulder_pos = pivot + c.shoulder * (s0 - pivot);
   }

@@ -159,7 +159,26 @@ struct Solver {
       *target = p.point + 0.3f * rig.forward;
       return true;
     }
-    *target = p.point + contact_distance(loc.contact, false) * glm::normalize(p.normal);
+    glm::vec3 away = glm::normalize(p.normal);
+    // A hand beside the FAR side of the body (the right hand at `left_beside`) is held off it in
+    // front: the other arm hangs at that side, and the crossing arm reaches the place round the
+    // front of the chest. Held off sideways (the anchor's normal on a rig whose `*_beside` normal
+    // points out) the hand is level with the body's mid-plane and the upper arm goes through the
+    // torso (40-83 mm at the chest and belly on the reference humanoid, 8-24 mm at the face).
+    // From the shoulders down it is slanted back in towards the middle (half as much inwards as
+    // forwards; measured: straight forward, or as much inwards as forwards, leaves the chest key
+    // poses 2-3 mm deeper), at the neck a quarter (a half pushes the hand off the jaw, 10 cm from
+    // the place; none lets the rest transitions cut through the chest, 126 mm), at the face not
+    // at all (the forearm passes below the chin and a slant brings it into the head).
+    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
+    if (seen == (plan.side == kRight ? notation::Side::LeftBeside : notation::Side::RightBeside)) {
+      const glm::vec3 across = plan.side == kRight ? rig.left : -rig.left;  // to the far side
+      const float slant = static_cast<int>(loc.level) >= static_cast<int>(BodyLevel::Shoulders) ? 0.5f
+                          : loc.level == BodyLevel::Neck                                       ? 0.25f
+                                                                                               : 0.0f;
+      away = glm::normalize(rig.forward - slant * across);
+    }
+    *target = p.point + contact_distance(loc.contact, false) * away;
     return true;
   }
 

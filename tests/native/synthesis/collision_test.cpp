@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 
 #include "synthesis/signing_avatar.h"
 #include "synthesis/transition.h"
@@ -275,8 +276,8 @@ TEST(SynthesisCollision, ArmInsideTheTorsoIsDetectedAndTheRestPoseIsClean) {
 // Hands at the places across the body (the non-dominant side), where the forearm crosses the
 // chest and the elbow could sink into the torso: the arm stays out of the trunk by 5 mm, with
 // touch and close contact, three hand configurations, on the reference humanoid and the
-// re-rigged variant (all places) and on the project's avatar (the places it passes; the rest,
-// and the `left_beside` places on every rig, are the known gaps in docs/SYNTHESIS.md).
+// re-rigged variant (all places) and on the project's avatar (the places it passes; the rest are
+// known gaps in docs/SYNTHESIS.md). The `left_beside` places: HandBesideTheFarSide... below.
 TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
   struct Place { BodyLevel level; Side side; };
   const std::vector<Place> all_places = {
@@ -331,6 +332,115 @@ TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
         }
   }
   RecordProperty("worst_arm_depth_mm", std::to_string(worst * 1000.0f));
+}
+
+// The deepest `side` arm in the trunk over the frames of the clip's Sign segment (the key pose
+// held) and over the whole clip (with the transitions from and back to rest).
+void crossing_arm_depths(const SynthContext& ctx, const SynthesisResult& r, Side_ side, float* key_m,
+                         float* clip_m) {
+  int first = 0, last = -1;
+  for (const auto& s : r.clip.segments)
+    if (s.kind == ClipSegment::Kind::Sign) {
+      first = static_cast<int>(std::lround(s.start_s * r.clip.fps));
+      last = static_cast<int>(std::lround(s.end_s * r.clip.fps));
+    }
+  *key_m = *clip_m = 0.0f;
+  PoseBuilder pb(ctx.rig);
+  for (int f = 0; f < r.clip.frame_count; ++f) {
+    pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * ctx.rig.joint_count]);
+    const bool contact = r.report.intended_contact[f] & exempt_bit(side, false);
+    const float d = arm_penetration(ctx.body, pb, side, true, contact, false).depth_m;
+    *clip_m = std::max(*clip_m, d);
+    if (f >= first && f <= last) *key_m = std::max(*key_m, d);
+  }
+}
+
+// The dominant hand beside the FAR side of the body (`left_beside` from the forehead to the
+// belly; touch, close and no contact; a flat hand, fingers up, palm in): the arm reaches round
+// the front of the chest (the place held off in front, the shoulder girdle protracted) instead
+// of through the torso. Before that, in the key poses, the upper arm was 22-83 mm in the torso
+// at the shoulders to the belly on the reference humanoid (8-24 mm at the face and neck) and
+// 13-22 mm on the project avatar, and the transitions from and back to rest cut through by
+// 95-131 mm (now each clip's worst frame is its key pose's). Bounds: 5 mm (the rule) except
+// where measured deeper, rounded up, per rig. Waist and below are known gaps (docs/SYNTHESIS.md).
+TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
+  struct Bounds { float close_mm, none_mm; };  // key pose and clip; touch: 5 mm everywhere
+  struct Rig_ {
+    std::string name;
+    avatar::Avatar avatar;
+    std::map<BodyLevel, Bounds> known;
+  };
+  std::vector<Rig_> rigs;
+  // Reference humanoid, belly: 7.1 mm close, 7.4 mm none (the upper arm by the chest's lower
+  // corner; the elbow cannot come further forward with the hand that low and that far across).
+  rigs.push_back({"reference", make_reference_humanoid(), {{BodyLevel::Belly, {8.0f, 8.0f}}}});
+  const std::string model = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
+  if (std::ifstream(model).good()) {
+    SigningAvatar sa = load_signing_avatar_file(model);
+    ASSERT_TRUE(sa.ok()) << sa.error;
+    rigs.push_back({"avatar", std::move(sa.avatar), {}});
+  }
+  const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,      BodyLevel::Mouth,
+                              BodyLevel::Chin,     BodyLevel::Neck,      BodyLevel::Shoulders,
+                              BodyLevel::ShoulderTop, BodyLevel::Chest,  BodyLevel::Stomach,
+                              BodyLevel::Belly};
+  float worst_key = 0.0f;
+  for (const Rig_& rg : rigs) {
+    Synthesizer synth(rg.avatar);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
+    for (BodyLevel level : levels)
+      for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
+        notation::SignSpec s = sign_at(flat(), level, Side::LeftBeside, c);
+        s.dominant.orientation.extended_finger = {0, 1, 0};
+        s.dominant.orientation.palm = {0, 0, -1};
+        SynthesisResult r = synth.sign(s, SynthesisOptions{});
+        ASSERT_TRUE(r.ok()) << r.errors[0].message;
+        const std::string where = rg.name + " level " + std::to_string(static_cast<int>(level)) +
+                                  " contact " + std::to_string(static_cast<int>(c));
+        float key = 0.0f, clip = 0.0f;
+        crossing_arm_depths(ctx, r, kRight, &key, &clip);
+        float bound_mm = 5.0f;
+        auto k = rg.known.find(level);
+        if (k != rg.known.end() && c != Contact::Touch)
+          bound_mm = c == Contact::Close ? k->second.close_mm : k->second.none_mm;
+        EXPECT_LE(key * 1000.0f, bound_mm) << where << " (key pose)";
+        EXPECT_LE(clip * 1000.0f, bound_mm) << where << " (whole clip)";
+        worst_key = std::max(worst_key, key);
+        // Still at the place: a touch touches, a hand held off stays 3-10 cm from it.
+        ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
+        const float reach = r.report.contact_distances_m[0];
+        if (c == Contact::Touch) {
+          EXPECT_LT(reach, 0.01f) << where;
+        } else {
+          EXPECT_GE(reach, 0.03f) << where;
+          EXPECT_LE(reach, 0.10f) << where;
+        }
+      }
+  }
+  // A left-handed signer mirrors it: the left arm reaches round the front to the right side.
+  {
+    avatar::Avatar av = make_reference_humanoid();
+    SynthesisOptions lh;
+    lh.left_handed = true;
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(av, lh, &ctx, &error)) << error;
+    for (Contact c : {Contact::Close, Contact::None}) {
+      notation::SignSpec s = sign_at(flat(), BodyLevel::Chest, Side::LeftBeside, c);
+      s.dominant.orientation.extended_finger = {0, 1, 0};
+      s.dominant.orientation.palm = {0, 0, -1};
+      SynthesisResult r = synthesize_sign(s, av, lh);
+      ASSERT_TRUE(r.ok()) << r.errors[0].message;
+      float key = 0.0f, clip = 0.0f;
+      crossing_arm_depths(ctx, r, kLeft, &key, &clip);
+      EXPECT_LE(key * 1000.0f, 5.0f) << "left-handed, contact " << static_cast<int>(c);
+      EXPECT_LE(clip * 1000.0f, 5.0f) << "left-handed, contact " << static_cast<int>(c);
+    }
+  }
+  RecordProperty("worst_key_pose_arm_depth_mm", std::to_string(worst_key * 1000.0f));
 }
 
 }  // namespace
