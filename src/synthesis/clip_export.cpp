@@ -83,7 +83,54 @@ struct BinWriter {
     accessors.push_back(acc);
     return static_cast<int>(accessors.size()) - 1;
   }
+  // Appends a buffer view without an accessor; returns the view index.
+  int add_view(const void* data, size_t bytes) {
+    while (bin.size() % 4) bin.push_back(0);
+    size_t offset = bin.size();
+    bin.resize(offset + bytes);
+    if (bytes) std::memcpy(bin.data() + offset, data, bytes);
+    views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}});
+    return static_cast<int>(views.size()) - 1;
+  }
+  // A VEC3 float accessor of `count` elements, zero except at `indices` (strictly increasing),
+  // stored sparse (glTF 2.0 3.6.2.3): a face morph moves a few hundred of the ~17,000 merged
+  // vertices, and 41 dense targets with normals would make the file ~17 MB instead of ~1 MB.
+  int add_sparse_vec3(int count, const std::vector<std::uint32_t>& indices, const std::vector<glm::vec3>& values,
+                      bool with_bounds) {
+    nlohmann::json acc = {{"componentType", 5126}, {"count", count}, {"type", "VEC3"}};
+    if (!indices.empty()) {
+      int iv = add_view(indices.data(), indices.size() * 4);
+      int vv = add_view(values.data(), values.size() * 12);
+      acc["sparse"] = {{"count", indices.size()},
+                       {"indices", {{"bufferView", iv}, {"componentType", 5125}}},
+                       {"values", {{"bufferView", vv}}}};
+    }
+    if (with_bounds) {  // POSITION targets must carry min/max; the implicit zeros count too
+      glm::vec3 lo(0.0f), hi(0.0f);
+      for (const glm::vec3& v : values) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+      }
+      acc["min"] = {lo.x, lo.y, lo.z};
+      acc["max"] = {hi.x, hi.y, hi.z};
+    }
+    accessors.push_back(acc);
+    return static_cast<int>(accessors.size()) - 1;
+  }
 };
+
+// The non-zero entries of a per-vertex delta array (exactly zero ones are left to the sparse
+// accessor's implicit zeros, so the file reads back bit for bit).
+void nonzero_entries(const std::vector<glm::vec3>& deltas, std::vector<std::uint32_t>* indices,
+                     std::vector<glm::vec3>* values) {
+  indices->clear();
+  values->clear();
+  for (size_t v = 0; v < deltas.size(); ++v) {
+    if (deltas[v] == glm::vec3(0.0f)) continue;
+    indices->push_back(static_cast<std::uint32_t>(v));
+    values->push_back(deltas[v]);
+  }
+}
 
 constexpr int kFloat = 5126, kUShort = 5123, kUInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
@@ -128,6 +175,7 @@ ExportResult export_glb(const Clip& clip, const avatar::Avatar& avatar) {
   gltf["skins"] = {{{"joints", joint_nodes}, {"inverseBindMatrices", ibm_acc}}};
   const auto& mesh = avatar.mesh;
   const size_t V = mesh.positions.size();
+  std::vector<std::string> morph_names;  // the mesh's morph targets, in their order
   bool has_mesh = V > 0 && mesh.normals.size() == V && mesh.joints.size() == V &&
                   mesh.weights.size() == V && !mesh.indices.empty();
   if (has_mesh) {
@@ -146,6 +194,23 @@ ExportResult export_glb(const Clip& clip, const avatar::Avatar& avatar) {
       materials.push_back({{"name", m.name},
                            {"pbrMetallicRoughness", {{"baseColorFactor", {m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a}},
                                                      {"metallicFactor", m.metallic}, {"roughnessFactor", m.roughness}}}});
+    // Face morph targets (shared by every primitive: the mesh is merged) with their names, so the
+    // clip's morph weights can animate them.
+    nlohmann::json targets = nlohmann::json::array(), target_names = nlohmann::json::array();
+    for (const avatar::MorphTarget& m : avatar.morphs) {
+      if (m.position_deltas.size() != V) continue;
+      std::vector<std::uint32_t> idx;
+      std::vector<glm::vec3> val;
+      nonzero_entries(m.position_deltas, &idx, &val);
+      nlohmann::json t = {{"POSITION", w.add_sparse_vec3(static_cast<int>(V), idx, val, true)}};
+      if (m.normal_deltas.size() == V) {
+        nonzero_entries(m.normal_deltas, &idx, &val);
+        t["NORMAL"] = w.add_sparse_vec3(static_cast<int>(V), idx, val, false);
+      }
+      targets.push_back(t);
+      target_names.push_back(m.name);
+      morph_names.push_back(m.name);
+    }
     std::vector<avatar::Primitive> ranges = mesh.primitives;
     if (ranges.empty()) ranges.push_back({0, static_cast<std::uint32_t>(mesh.indices.size()), 0});
     for (const auto& pr : ranges) {
@@ -155,9 +220,14 @@ ExportResult export_glb(const Clip& clip, const avatar::Avatar& avatar) {
       nlohmann::json p = {{"attributes", {{"POSITION", pos}, {"NORMAL", nrm}, {"JOINTS_0", jnt}, {"WEIGHTS_0", wgt}}},
                           {"indices", idx}};
       if (pr.material >= 0 && pr.material < static_cast<int>(materials.size())) p["material"] = pr.material;
+      if (!targets.empty()) p["targets"] = targets;
       prims.push_back(p);
     }
     gltf["meshes"] = {{{"name", "avatar"}, {"primitives", prims}}};
+    if (!targets.empty()) {
+      gltf["meshes"][0]["weights"] = std::vector<float>(targets.size(), 0.0f);
+      gltf["meshes"][0]["extras"] = {{"targetNames", target_names}};  // the names viewers show
+    }
     if (!materials.empty()) gltf["materials"] = materials;
     nodes.push_back({{"name", "avatar"}, {"mesh", 0}, {"skin", 0}});
     roots.push_back(J);
@@ -187,6 +257,24 @@ ExportResult export_glb(const Clip& clip, const avatar::Avatar& avatar) {
                     clip.frame_count, "VEC3");
     samplers.push_back({{"input", input}, {"output", acc}, {"interpolation", "LINEAR"}});
     channels.push_back({{"sampler", samplers.size() - 1}, {"target", {{"node", 0}, {"path", "translation"}}}});
+  }
+  // The face: the clip's morph weights on the mesh node's targets (by name; a target the clip
+  // does not drive stays at 0), one weight per target per frame (glTF's "weights" path).
+  if (!morph_names.empty() && clip.morph_count() > 0 &&
+      clip.morph_weights.size() >= static_cast<size_t>(clip.frame_count) * clip.morph_count()) {
+    const size_t M = morph_names.size();
+    std::vector<int> from_clip(M, -1);
+    for (size_t m = 0; m < M; ++m)
+      for (int c = 0; c < clip.morph_count(); ++c)
+        if (clip.morph_names[c] == morph_names[m]) from_clip[m] = c;
+    std::vector<float> weights(static_cast<size_t>(clip.frame_count) * M, 0.0f);
+    for (int f = 0; f < clip.frame_count; ++f)
+      for (size_t m = 0; m < M; ++m)
+        if (from_clip[m] >= 0)
+          weights[f * M + m] = clip.morph_weights[static_cast<size_t>(f) * clip.morph_count() + from_clip[m]];
+    int acc = w.add(weights.data(), weights.size() * 4, kFloat, static_cast<int>(weights.size()), "SCALAR");
+    samplers.push_back({{"input", input}, {"output", acc}, {"interpolation", "LINEAR"}});
+    channels.push_back({{"sampler", samplers.size() - 1}, {"target", {{"node", J}, {"path", "weights"}}}});
   }
   gltf["animations"] = {{{"name", "signweave"}, {"samplers", samplers}, {"channels", channels}}};
   gltf["nodes"] = nodes;

@@ -1,7 +1,9 @@
 // Clip export: a synthesised clip as a BVH motion file (foundation's writer: centimetres, ZXY
 // Euler channels) or as a binary glTF 2.0 (.glb) holding the avatar's skeleton as nodes, its
-// skinned mesh when it has one, and the clip as an animation (rotation per joint, root
-// translation; LINEAR samplers at the clip's frame times). Errors are values.
+// skinned mesh when it has one (with the face's morph targets, stored as sparse accessors), and
+// the clip as an animation (rotation per joint, root translation, and the face's morph weights on
+// the mesh's targets, matched by name; LINEAR samplers at the clip's frame times). Errors are
+// values.
 #pragma once
 
 #include <cstdint>

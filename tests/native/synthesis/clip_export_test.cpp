@@ -6,9 +6,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstring>
+
 #include "avatar/gltf_loader.h"
 #include "skeleton/bvh.h"
 #include "synthesis/clip_sampler.h"
+#include "synthesis/phrase_text.h"
+#include "synthesis/signing_avatar.h"
+#include "synthesis/synthesize.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -93,6 +98,85 @@ TEST(SynthesisClip, GlbIsAValidGltfWithSkeletonAndAnimation) {
   if (back.ok()) {
     EXPECT_EQ(back.avatar.skeleton.joint_count(), av.skeleton.joint_count());
   }
+}
+
+// The GLB carries the face: the avatar's morph targets (sparse, read back exactly) and the clip's
+// morph weights as a "weights" channel on the mesh node. Before, the export dropped both, so a
+// downloaded clip signed with a frozen face.
+TEST(SynthesisClip, GlbCarriesTheFaceMorphTargetsAndTheirWeights) {
+  SigningAvatar sa = load_signing_avatar_file(std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb");
+  if (!sa.ok()) GTEST_SKIP() << "models/signweave-avatar.glb: " << sa.error;
+  const avatar::Avatar& av = sa.avatar;
+  ASSERT_FALSE(av.morphs.empty());
+  Synthesizer synth(av);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  PhraseText t = phrase_from_text("R(H(flat), Loc(chin, centre, touch), M(straight, o)) N(mouth=\"thank you\", expression=happy:0.8)", {});
+  ASSERT_TRUE(t.ok());
+  SynthesisResult r = synth.phrase(t.items, {});
+  ASSERT_TRUE(r.ok());
+  ASSERT_GT(r.clip.morph_count(), 0);
+  ExportResult e = export_glb(r.clip, av);
+  ASSERT_TRUE(e.ok()) << e.error;
+  auto u32 = [&](size_t at) {
+    return static_cast<std::uint32_t>(e.bytes[at] | (e.bytes[at + 1] << 8) | (e.bytes[at + 2] << 16) | (e.bytes[at + 3] << 24));
+  };
+  const std::uint32_t json_len = u32(12);
+  const nlohmann::json j = nlohmann::json::parse(std::string(e.bytes.begin() + 20, e.bytes.begin() + 20 + json_len));
+  const std::uint8_t* bin = e.bytes.data() + 20 + json_len + 8;
+  auto view_data = [&](int view) { return bin + j["bufferViews"][view].value("byteOffset", 0); };
+  // Targets: one per morph, named, on every primitive.
+  const auto& mesh = j["meshes"][0];
+  ASSERT_EQ(mesh["extras"]["targetNames"].size(), av.morphs.size());
+  for (const auto& p : mesh["primitives"]) ASSERT_EQ(p["targets"].size(), av.morphs.size());
+  // A sparse POSITION target reads back to the avatar's dense deltas exactly.
+  size_t moved = 0;
+  for (size_t m = 0; m < av.morphs.size(); ++m) {
+    EXPECT_EQ(mesh["extras"]["targetNames"][m], av.morphs[m].name);
+    const auto& acc = j["accessors"][mesh["primitives"][0]["targets"][m]["POSITION"].get<int>()];
+    std::vector<glm::vec3> dense(av.mesh.positions.size(), glm::vec3(0.0f));
+    if (acc.contains("sparse")) {
+      const size_t n = acc["sparse"]["count"];
+      const std::uint8_t* idx = view_data(acc["sparse"]["indices"]["bufferView"]);
+      const std::uint8_t* val = view_data(acc["sparse"]["values"]["bufferView"]);
+      for (size_t k = 0; k < n; ++k) {
+        std::uint32_t v;
+        std::memcpy(&v, idx + 4 * k, 4);
+        ASSERT_LT(v, dense.size());
+        std::memcpy(&dense[v], val + 12 * k, 12);
+      }
+      moved += n;
+    }
+    EXPECT_EQ(dense, av.morphs[m].position_deltas) << av.morphs[m].name;
+  }
+  EXPECT_GT(moved, 0u);
+  // The weights channel: on the mesh node, frame-major, the clip's weights matched by name.
+  const auto& anim = j["animations"][0];
+  const nlohmann::json* weights = nullptr;
+  for (const auto& c : anim["channels"])
+    if (c["target"]["path"] == "weights") weights = &c;
+  ASSERT_NE(weights, nullptr);
+  EXPECT_EQ((*weights)["target"]["node"].get<size_t>(), av.skeleton.joints.size());
+  const auto& out = j["accessors"][anim["samplers"][(*weights)["sampler"].get<int>()]["output"].get<int>()];
+  const size_t M = av.morphs.size();
+  ASSERT_EQ(out["count"].get<size_t>(), static_cast<size_t>(r.clip.frame_count) * M);
+  const std::uint8_t* wdata = view_data(out["bufferView"]);
+  float driven = 0.0f;
+  for (int f = 0; f < r.clip.frame_count; f += 7) {
+    for (int c = 0; c < r.clip.morph_count(); ++c) {
+      for (size_t m = 0; m < M; ++m) {
+        if (av.morphs[m].name != r.clip.morph_names[c]) continue;
+        float got;
+        std::memcpy(&got, wdata + 4 * (static_cast<size_t>(f) * M + m), 4);
+        const float want = r.clip.morph_weights[static_cast<size_t>(f) * r.clip.morph_count() + c];
+        EXPECT_EQ(got, want) << r.clip.morph_names[c] << " frame " << f;
+        driven = std::max(driven, want);
+      }
+    }
+  }
+  EXPECT_GT(driven, 0.1f);  // the mouthing and the smile really move the face
+  // Sparse keeps the download small: the dense targets alone would be ~17 MB.
+  EXPECT_LT(e.bytes.size(), 6u * 1024 * 1024);
+  RecordProperty("glb_bytes", std::to_string(e.bytes.size()));
 }
 
 TEST(SynthesisClip, ExportRejectsAClipOfAnotherSkeleton) {
