@@ -443,5 +443,81 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
   RecordProperty("worst_key_pose_arm_depth_mm", std::to_string(worst_key * 1000.0f));
 }
 
+// The transitions from and back to the rest pose of a hand at the FAR side's beside places (fist,
+// pointing and flat hands, touch, close and no contact, from the forehead to below the waist): the
+// arm comes forward first and only then across (transition.cpp's waypoint chain), so no frame of
+// the clip is deeper in the trunk than the key pose itself, or 5 mm. Before the chain, with the
+// clavicle protraction and the arm slerped apart and one blended via-pose, the project avatar's
+// fist at shoulder_top (touch) cut through by 120 mm in its rest transition (key pose 7.6 mm);
+// the reference humanoid's flat hand at the waist (touch) by 91 mm (key 0.5 mm) and below the
+// waist by 75 / 64 mm (close / none; key poses 27 / 18 mm); fists and pointing hands below the
+// waist by 62-116 mm on both rigs (now each is its key pose's depth). The key poses below the
+// chest stay deep (known gaps, docs/SYNTHESIS.md); this test bounds only what the transitions add.
+// Exceptions, measured after the chain and rounded up, where a transition is still deeper than
+// the key pose (the reference humanoid from the stomach down): listed in `known` with what it was
+// before.
+TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
+  struct Case { std::string rig; int shape; BodyLevel level; Contact contact; };
+  struct Known { Case c; float clip_mm; };
+  // shape: 0 flat, 1 fist, 2 pointing index.
+  // clip_mm: measured now, rounded up (before the chain, in brackets: arm depth in the clip; the
+  // plan minimises the report's depth, hand included, which no case made worse).
+  const std::vector<Known> known = {
+      {{"reference", 0, BodyLevel::Waist, Contact::Close}, 32.0f},    // 31.3 (25.7; report 33.5 -> 31.6)
+      {{"reference", 0, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.2 (32.4)
+      {{"reference", 1, BodyLevel::Stomach, Contact::Close}, 8.5f},   // 7.9 (7.9)
+      {{"reference", 1, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.5 (15.2; report 31.1 both)
+      {{"reference", 1, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
+      {{"reference", 2, BodyLevel::Stomach, Contact::Close}, 8.5f},   // 8.0 (8.0)
+      {{"reference", 2, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.6 (16.1; report 28.8 both)
+      {{"reference", 2, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
+      {{"reference", 2, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.1 (36.9)
+      {{"avatar", 0, BodyLevel::BelowWaist, Contact::Touch}, 12.0f},  // 11.1 (14.1)
+  };
+  struct Rig_ { std::string name; avatar::Avatar avatar; };
+  std::vector<Rig_> rigs;
+  rigs.push_back({"reference", make_reference_humanoid()});
+  const std::string model = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
+  if (std::ifstream(model).good()) {
+    SigningAvatar sa = load_signing_avatar_file(model);
+    ASSERT_TRUE(sa.ok()) << sa.error;
+    rigs.push_back({"avatar", std::move(sa.avatar)});
+  }
+  const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,        BodyLevel::Mouth,
+                              BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
+                              BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
+                              BodyLevel::Belly,    BodyLevel::Waist,       BodyLevel::BelowWaist};
+  const notation::HandShape shapes[] = {flat(), fist(), index_point()};
+  float worst_added = 0.0f;
+  for (const Rig_& rg : rigs) {
+    Synthesizer synth(rg.avatar);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
+    for (int shape = 0; shape < 3; ++shape)
+      for (BodyLevel level : levels)
+        for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
+          notation::SignSpec s = sign_at(shapes[shape], level, Side::LeftBeside, c);
+          s.dominant.orientation.extended_finger = {0, 1, 0};
+          s.dominant.orientation.palm = {0, 0, -1};
+          SynthesisResult r = synth.sign(s, SynthesisOptions{});
+          ASSERT_TRUE(r.ok()) << r.errors[0].message;
+          float key = 0.0f, clip = 0.0f;
+          crossing_arm_depths(ctx, r, kRight, &key, &clip);
+          float bound_mm = std::max(key * 1000.0f, 5.0f) + 0.5f;  // 0.5 mm: sampling of the key pose's hold
+          for (const Known& k : known)
+            if (k.c.rig == rg.name && k.c.shape == shape && k.c.level == level && k.c.contact == c)
+              bound_mm = k.clip_mm;
+          const std::string where = rg.name + " shape " + std::to_string(shape) + " level " +
+                                    std::to_string(static_cast<int>(level)) + " contact " +
+                                    std::to_string(static_cast<int>(c));
+          EXPECT_LE(clip * 1000.0f, bound_mm) << where << " (key pose " << key * 1000.0f << " mm)";
+          worst_added = std::max(worst_added, clip - key);
+        }
+  }
+  RecordProperty("worst_depth_added_by_a_transition_mm", std::to_string(worst_added * 1000.0f));
+}
+
 }  // namespace
 }  // namespace sw::synthesis
