@@ -449,17 +449,20 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
 // the clip is deeper in the trunk than the key pose itself, or 5 mm. Before the chain, with the
 // clavicle protraction and the arm slerped apart and one blended via-pose, the project avatar's
 // fist at shoulder_top (touch) cut through by 120 mm in its rest transition (key pose 7.6 mm);
+// with the fist across the body at shoulder_top by 105/119/107 mm (touch/close/none; now 18/8.7/5.9,
+// the key poses') and at the shoulders by 105/77 mm (touch/close; now 6.0/3.9);
 // the reference humanoid's flat hand at the waist (touch) by 91 mm (key 0.5 mm) and below the
 // waist by 75 / 64 mm (close / none; key poses 27 / 18 mm); fists and pointing hands below the
-// waist by 62-116 mm on both rigs (now each is its key pose's depth). The key poses below the
+// waist by 32-129 mm on both rigs (now each is its key pose's depth). The key poses below the
 // chest stay deep (known gaps, docs/SYNTHESIS.md); this test bounds only what the transitions add.
 // Exceptions, measured after the chain and rounded up, where a transition is still deeper than
-// the key pose (the reference humanoid from the stomach down): listed in `known` with what it was
+// the key pose (from the stomach down): listed in `known` with what it was
 // before.
 TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
   struct Case { std::string rig; int shape; BodyLevel level; Contact contact; };
   struct Known { Case c; float clip_mm; };
-  // shape: 0 flat, 1 fist, 2 pointing index.
+  // shape: 0 flat, 1 fist, 2 pointing index (fingers up, palm in); 3 fist across the body
+  // (fingers to the left), 4 pointing up-left (the previous measurements' hands).
   // clip_mm: measured now, rounded up (before the chain, in brackets: arm depth in the clip; the
   // plan minimises the report's depth, hand included, which no case made worse).
   const std::vector<Known> known = {
@@ -473,6 +476,14 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
       {{"reference", 2, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
       {{"reference", 2, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.1 (36.9)
       {{"avatar", 0, BodyLevel::BelowWaist, Contact::Touch}, 12.0f},  // 11.1 (14.1)
+      // Across the body (fist fingers to the left, pointing hand up-left):
+      {{"reference", 3, BodyLevel::Belly, Contact::Touch}, 30.0f},    // 29.4 (21.3; report 40.2 both)
+      {{"reference", 3, BodyLevel::Belly, Contact::Close}, 23.0f},    // 22.7 (30.5)
+      {{"reference", 3, BodyLevel::Waist, Contact::Touch}, 37.5f},    // 37.0 (35.8; report 38.1 -> 37.0)
+      {{"reference", 4, BodyLevel::Stomach, Contact::Close}, 10.0f},  // 9.6 (9.6)
+      {{"reference", 4, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.6 (14.9; report 30.0 both)
+      {{"avatar", 3, BodyLevel::Waist, Contact::Close}, 14.5f},       // 13.9 (13.9)
+      {{"avatar", 4, BodyLevel::BelowWaist, Contact::Touch}, 9.5f},   // 9.1 (13.7)
   };
   struct Rig_ { std::string name; avatar::Avatar avatar; };
   std::vector<Rig_> rigs;
@@ -487,7 +498,8 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
                               BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
                               BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
                               BodyLevel::Belly,    BodyLevel::Waist,       BodyLevel::BelowWaist};
-  const notation::HandShape shapes[] = {flat(), fist(), index_point()};
+  const notation::HandShape shapes[] = {flat(), fist(), index_point(), fist(), index_point()};
+  const Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
   float worst_added = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
@@ -495,11 +507,11 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
     SynthContext ctx;
     std::string error;
     ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
-    for (int shape = 0; shape < 3; ++shape)
+    for (int shape = 0; shape < 5; ++shape)
       for (BodyLevel level : levels)
         for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
           notation::SignSpec s = sign_at(shapes[shape], level, Side::LeftBeside, c);
-          s.dominant.orientation.extended_finger = {0, 1, 0};
+          s.dominant.orientation.extended_finger = fingers[shape];
           s.dominant.orientation.palm = {0, 0, -1};
           SynthesisResult r = synth.sign(s, SynthesisOptions{});
           ASSERT_TRUE(r.ok()) << r.errors[0].message;
