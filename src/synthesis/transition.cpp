@@ -63,22 +63,80 @@ float max_penetration(const SynthContext& ctx, const glm::quat* frames, int fram
 
 namespace {
 
-void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<glm::quat>* delta,
-                 float via_tau, int joints, int k, std::vector<glm::quat>* out) {
+// A via-pose: the joints' rotation offsets from the direct path (local, right-multiplied) and the
+// time (0..1 of the transition) at which the path passes through it.
+struct Via {
+  std::vector<glm::quat> delta;
+  float tau = 0.5f;
+};
+
+// The weight of via `v` at time tau: sin^2 rising from the previous via's time (or the start) to
+// its own and falling to the next via's time (or the end), zero slope at every via and at both
+// ends, so consecutive vias' weights sum to 1 between them and the path passes exactly through
+// each via-pose at its time.
+float via_weight(const std::vector<Via>& vias, size_t v, float tau) {
+  const float t0 = v == 0 ? 0.0f : vias[v - 1].tau, t1 = vias[v].tau;
+  const float t2 = v + 1 == vias.size() ? 1.0f : vias[v + 1].tau;
+  if (tau <= t0 || tau >= t2) return 0.0f;
+  float phase = tau <= t1 ? 0.5f * (tau - t0) / (t1 - t0) : 0.5f + 0.5f * (tau - t1) / (t2 - t1);
+  float w = std::sin(3.14159265f * phase);
+  return w * w;
+}
+
+void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>& vias, int joints, int k,
+                 std::vector<glm::quat>* out) {
   out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
+  std::vector<float> w(vias.size());
   for (int i = 1; i < k; ++i) {
     float tau = static_cast<float>(i) / k;
     float e = minimum_jerk(tau);
-    // The via displacement fades in and out with zero slope at both ends (sin^2 of a phase that
-    // reaches 1/2 at the via time), peaking — zero slope again — where the direct path was
-    // worst, so the path passes exactly through the via-pose there.
-    float phase = tau <= via_tau ? 0.5f * tau / via_tau : 0.5f + 0.5f * (tau - via_tau) / (1.0f - via_tau);
-    float w = std::sin(3.14159265f * phase);
-    w *= w;
+    for (size_t v = 0; v < vias.size(); ++v) w[v] = via_weight(vias, v, tau);
     for (int j = 0; j < joints; ++j) {
       glm::quat q = slerp_shortest(a[j], b[j], e);
-      if (delta) q = q * slerp_shortest(glm::quat(1, 0, 0, 0), (*delta)[j], w);
+      for (size_t v = 0; v < vias.size(); ++v)
+        if (w[v] > 0.0f) q = q * slerp_shortest(glm::quat(1, 0, 0, 0), vias[v].delta[j], w[v]);
       (*out)[static_cast<size_t>(i - 1) * joints + j] = glm::normalize(q);
+    }
+  }
+}
+
+// A path through whole waypoint poses: from a through each waypoint to b, joint rotations slerped
+// piece by piece, one minimum-jerk profile over the whole (pieces by the share of the joint path
+// each takes, so the speed carries through every waypoint). Unlike blended via offsets, each
+// piece is a slerp between two poses clear of the body, so an arm that must first come forward
+// and only then across (a far-side place from the rest) does so in order. At a waypoint the
+// direction turns: over a window either side of it (45% of the shorter neighbouring piece) the
+// two pieces, each extended past the waypoint, are cross-faded by a smoothstep, so the velocity
+// is continuous and the path still passes exactly through the waypoint (both pieces are there).
+void interpolate_chain(const Rig& rig, const glm::quat* a, const glm::quat* b,
+                       const std::vector<std::vector<glm::quat>>& waypoints, int k, std::vector<glm::quat>* out) {
+  const int J = rig.joint_count;
+  std::vector<const glm::quat*> knots{a};
+  for (const auto& w : waypoints) knots.push_back(w.data());
+  knots.push_back(b);
+  const size_t pieces = knots.size() - 1;
+  std::vector<float> u{0.0f};
+  for (size_t i = 1; i < knots.size(); ++i) u.push_back(u.back() + transition_lmax(rig, knots[i - 1], knots[i]) + 1e-6f);
+  for (float& x : u) x /= u.back();
+  std::vector<float> half(knots.size(), 0.0f);  // blend half-window at each interior knot
+  for (size_t i = 1; i < pieces; ++i) half[i] = 0.45f * std::min(u[i] - u[i - 1], u[i + 1] - u[i]);
+  auto piece = [&](size_t p, int j, float e) {
+    return slerp_shortest(knots[p][j], knots[p + 1][j], (e - u[p]) / (u[p + 1] - u[p]));
+  };
+  out->resize(static_cast<size_t>(std::max(0, k - 1)) * J);
+  for (int i = 1; i < k; ++i) {
+    float e = minimum_jerk(static_cast<float>(i) / k);
+    size_t seg = 0;
+    while (seg + 1 < pieces && e > u[seg + 1]) ++seg;
+    // The nearest interior knot whose window holds e, if any.
+    size_t knot = 0;
+    for (size_t n = 1; n < pieces; ++n)
+      if (std::fabs(e - u[n]) < half[n]) knot = n;
+    float x = knot ? (e - (u[knot] - half[knot])) / (2.0f * half[knot]) : 0.0f;
+    float fade = x * x * (3.0f - 2.0f * x);
+    for (int j = 0; j < J; ++j) {
+      glm::quat q = knot ? slerp_shortest(piece(knot - 1, j, e), piece(knot, j, e), fade) : piece(seg, j, e);
+      (*out)[static_cast<size_t>(i - 1) * J + j] = glm::normalize(q);
     }
   }
 }
@@ -88,11 +146,12 @@ void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<glm::
 constexpr int kPathSamples = 24;
 
 // The longest distance any joint travels along an interpolation (interpolate's arguments).
-float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, const std::vector<glm::quat>* delta,
-                  float via_tau) {
+// `sample(k, out)` writes the k-1 intermediate states of the path from a to b (interpolate's form).
+template <typename Sampler>
+float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sampler sample) {
   const int J = rig.joint_count;
   std::vector<glm::quat> samples;
-  interpolate(a, b, delta, via_tau, J, kPathSamples, &samples);
+  sample(kPathSamples, &samples);
   PoseBuilder pb(rig);
   std::vector<glm::vec3> prev(J), cur(J);
   std::vector<float> length(J, 0.0f);
@@ -108,10 +167,30 @@ float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, const 
   return J > 0 ? *std::max_element(length.begin(), length.end()) : 0.0f;
 }
 
+// The longest distance any joint moves in one frame along from, frames (k-1 states), to.
+float max_joint_step(const Rig& rig, const glm::quat* from, const glm::quat* to, const std::vector<glm::quat>& frames,
+                     int k) {
+  const int J = rig.joint_count;
+  PoseBuilder pb(rig);
+  std::vector<glm::vec3> prev(J), cur(J);
+  float worst = 0.0f;
+  for (int i = 0; i <= k; ++i) {
+    pb.set_from_local(i == 0 ? from : i == k ? to : &frames[static_cast<size_t>(i - 1) * J]);
+    for (int j = 0; j < J; ++j) {
+      cur[j] = pb.position(j);
+      if (i > 0) worst = std::max(worst, glm::length(cur[j] - prev[j]));
+    }
+    std::swap(prev, cur);
+  }
+  return worst;
+}
+
 }  // namespace
 
 float transition_path_m(const Rig& rig, const glm::quat* from_locals, const glm::quat* to_locals) {
-  return path_length(rig, from_locals, to_locals, nullptr, 0.5f);
+  return path_length(rig, from_locals, to_locals, [&](int k, std::vector<glm::quat>* out) {
+    interpolate(from_locals, to_locals, {}, rig.joint_count, k, out);
+  });
 }
 
 TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, const glm::quat* to,
@@ -122,7 +201,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   TransitionPlan plan;
   plan.lmax_m = transition_path_m(rig, from, to);
   plan.k = transition_states(plan.lmax_m, fps, speed);
-  interpolate(from, to, nullptr, 0.5f, J, plan.k, &plan.frames);
+  interpolate(from, to, {}, J, plan.k, &plan.frames);
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
     for (int i = 1; i < k; ++i) {
@@ -143,8 +222,6 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // (along the escape direction and forward), re-solved by arm IK; orientation and fingers kept.
   // The via-pose replaces the worst state of the direct path (its time kept for the re-timed path).
   const float via_tau = std::min(0.8f, std::max(0.2f, static_cast<float>(worst + 1) / plan.k));
-  std::vector<glm::quat> mid(J);
-  for (int j = 0; j < J; ++j) mid[j] = slerp_shortest(from[j], to[j], minimum_jerk(via_tau));
   PoseBuilder worst_pose(rig);
   worst_pose.set_from_local(&plan.frames[static_cast<size_t>(worst) * J]);
   std::array<glm::vec3, 2> push{};
@@ -159,42 +236,127 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       push[s] = glm::normalize(arm.push_dir + rig.forward) * (arm.depth_m + 0.03f);
   }
   TransitionPlan best = plan;
-  // The push, then two, three and four times it; failing those, less than it: a via-pose pushed
-  // further can take another swivel that is worse (a hand across the waist: 5.2 mm at 1x, 15 mm
-  // at 2x, 1.2 mm at 0.75x).
-  const float scales[] = {1.0f, 2.0f, 3.0f, 4.0f, 0.75f, 0.5f};
-  for (int attempt = 1; attempt <= 6; ++attempt) {
+  // A via-pose at time `tau` of the direct path: each pushed hand's wrist target moved by its
+  // push, the arm re-solved by the arm IK with the body model (shoulder girdle included, so the
+  // clavicle's protraction travels with the arm instead of being slerped apart from it);
+  // orientation and fingers kept.
+  auto make_via = [&](const std::array<glm::vec3, 2>& pushes, float tau) {
+    std::vector<glm::quat> at(J);
+    for (int j = 0; j < J; ++j) at[j] = slerp_shortest(from[j], to[j], minimum_jerk(tau));
     PoseBuilder pm(rig);
-    pm.set_from_local(mid.data());
-    std::vector<glm::quat> via = mid, arm_locals(J);
+    pm.set_from_local(at.data());
+    std::vector<glm::quat> via = at, arm_locals(J);
     for (int s = 0; s < 2; ++s) {
-      if (glm::length(push[s]) == 0.0f) continue;
+      if (glm::length(pushes[s]) == 0.0f) continue;
       Side side = static_cast<Side>(s);
       const ArmRig& a = rig.arms[s];
       ArmTarget t;
-      t.point = pm.position(a.hand) + scales[attempt - 1] * push[s];
+      t.point = pm.position(a.hand) + pushes[s];
       t.contact_offset = glm::vec3(0.0f);
       t.hand_delta = pm.delta(a.hand);
       t.body = &ctx.body;
       PoseBuilder solved(rig);
-      solved.set_from_local(mid.data());
+      solved.set_from_local(at.data());
       apply_arm(rig, side, solve_arm(rig, side, t), &solved);
       solved.local_rotations(arm_locals.data());
       for (int j : {a.shoulder, a.upper, a.lower, a.hand})
         if (j >= 0) via[j] = arm_locals[j];
     }
-    std::vector<glm::quat> delta(J);
-    for (int j = 0; j < J; ++j) delta[j] = glm::conjugate(mid[j]) * via[j];
+    Via v;
+    v.tau = tau;
+    v.delta.resize(J);
+    for (int j = 0; j < J; ++j) v.delta[j] = glm::conjugate(at[j]) * via[j];
+    return v;
+  };
+  auto plan_with = [&](const std::vector<Via>& vias) {
     TransitionPlan p;
-    p.lmax_m = path_length(rig, from, to, &delta, via_tau);  // eq. (10) along the routed path
+    p.lmax_m = path_length(rig, from, to, [&](int k, std::vector<glm::quat>* out) {
+      interpolate(from, to, vias, J, k, out);
+    });  // eq. (10) along the routed path
     p.k = transition_states(p.lmax_m, fps, speed);
-    p.via_points = 1;
-    interpolate(from, to, &delta, via_tau, J, p.k, &p.frames);
+    p.via_points = static_cast<int>(vias.size());
+    interpolate(from, to, vias, J, p.k, &p.frames);
     p.exempt = exempt_for(p.k);
     p.max_penetration_m = max_penetration(ctx, p.frames.data(), p.k - 1, p.exempt.data(), nullptr, nullptr);
+    return p;
+  };
+  auto plan_chain = [&](const std::vector<Via>& vias) {
+    std::vector<std::vector<glm::quat>> waypoints;
+    for (const Via& v : vias) {
+      std::vector<glm::quat> w(J);
+      for (int j = 0; j < J; ++j)
+        w[j] = glm::normalize(slerp_shortest(from[j], to[j], minimum_jerk(v.tau)) * v.delta[j]);
+      waypoints.push_back(std::move(w));
+    }
+    TransitionPlan p;
+    auto sample = [&](int k, std::vector<glm::quat>* out) { interpolate_chain(rig, from, to, waypoints, k, out); };
+    p.lmax_m = path_length(rig, from, to, sample);  // eq. (10) along the routed path
+    p.k = transition_states(p.lmax_m, fps, speed);
+    p.via_points = static_cast<int>(vias.size());
+    sample(p.k, &p.frames);
+    // Eq. (10) sets the mean speed; a single minimum-jerk profile peaks at 1.875 times it. The
+    // pieces share that profile by the path of the joint that travels furthest overall, so a
+    // joint that travels most in one piece (a hand's fingertips swinging round the waypoint)
+    // can outrun it there: then the states are increased until no joint steps further per frame
+    // than the profile's peak over the whole path (the human speed of the direct transitions).
+    const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;
+    const float step_m = max_joint_step(rig, from, to, p.frames, p.k);
+    if (step_m > peak_step_m) {
+      p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
+      sample(p.k, &p.frames);
+    }
+    p.exempt = exempt_for(p.k);
+    p.max_penetration_m = max_penetration(ctx, p.frames.data(), p.k - 1, p.exempt.data(), nullptr, nullptr);
+    return p;
+  };
+  auto consider = [&](TransitionPlan p) {
     if (p.max_penetration_m < best.max_penetration_m) best = std::move(p);
-    if (best.max_penetration_m <= 0.005f) break;
+    return best.max_penetration_m <= 0.005f;
+  };
+  // The push, then two, three and four times it; failing those, less than it: a via-pose pushed
+  // further can take another swivel that is worse (a hand across the waist: 5.2 mm at 1x, 15 mm
+  // at 2x, 1.2 mm at 0.75x).
+  const float scales[] = {1.0f, 2.0f, 3.0f, 4.0f, 0.75f, 0.5f};
+  for (float scale : scales)
+    if (consider(plan_with({make_via({scale * push[0], scale * push[1]}, via_tau)}))) return best;
+
+  // Round the front: an arm that sweeps through the trunk between a far-side place and the rest
+  // (the clavicle protracted at one end, hanging at the other) is routed with its wrist held in
+  // front of the trunk, pulled straight forward along the body's forward axis by the depth the
+  // direct path reached plus a margin. One such via-pose only moves the cut to the path's other
+  // half (the project avatar's fist at shoulder_top: upper arm 117 mm in the torso before the via
+  // at mid-transition, 138 mm after one at 0.2), so two: forward early, then forward late.
+  float depth[2] = {0.0f, 0.0f};
+  {
+    PoseBuilder pb(rig);
+    for (int f = 0; f + 1 < plan.k; ++f) {
+      pb.set_from_local(&plan.frames[static_cast<size_t>(f) * J]);
+      for (int s = 0; s < 2; ++s) {
+        Side side = static_cast<Side>(s);
+        depth[s] = std::max(depth[s], arm_penetration(ctx.body, pb, side, true, false, false).depth_m);
+        depth[s] = std::max(depth[s], hand_penetration(ctx.body, pb, side, true, false).depth_m);
+      }
+    }
   }
+  auto forward_push = [&](float margin_m) {
+    std::array<glm::vec3, 2> fwd{};
+    for (int s = 0; s < 2; ++s)
+      if (depth[s] > 0.005f) fwd[s] = rig.forward * (depth[s] + margin_m);
+    return fwd;
+  };
+  if (depth[0] <= 0.005f && depth[1] <= 0.005f) return best;
+  const float margins_m[] = {0.05f, 0.10f, 0.15f, 0.22f};
+  for (float tau : {via_tau, 0.5f})
+    for (float margin : margins_m)
+      if (consider(plan_with({make_via(forward_push(margin), tau)}))) return best;
+  for (float tau : {via_tau, 0.5f, 0.3f, 0.7f})
+    for (float margin : margins_m)
+      if (consider(plan_chain({make_via(forward_push(margin), tau)}))) return best;
+  const std::pair<float, float> pairs[] = {{0.3f, 0.7f}, {0.2f, 0.6f}, {0.4f, 0.8f}};
+  for (const auto& tt : pairs)
+    for (float margin : margins_m)
+      if (consider(plan_chain({make_via(forward_push(margin), tt.first), make_via(forward_push(margin), tt.second)})))
+        return best;
   return best;
 }
 

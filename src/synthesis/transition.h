@@ -11,7 +11,9 @@
 // L_max is measured along the path the interpolation makes the joints travel, not as the straight
 // distance between its ends (transition_path_m): coef is a speed along the hand's path.
 // When a state would pass through the body or the other hand, a via-pose (the hand pulled away
-// from the body) is inserted and the path routed through it (the seed's remedy).
+// from the body) is inserted and the path routed through it (the seed's remedy); when that still
+// cuts through, one or two waypoint poses with the wrists held in front of the trunk, the path a
+// chain of slerps through them with rounded corners (the arm comes forward, then across).
 #pragma once
 
 #include <cstdint>
@@ -44,7 +46,7 @@ int transition_states(float lmax_m, float fps, float speed);
 struct TransitionPlan {
   int k = 0;                 // states (eq. 10); k-1 intermediate frames are produced
   float lmax_m = 0.0f;       // eq. (10)'s L_max: the longest joint path (transition_path_m)
-  int via_points = 0;
+  int via_points = 0;        // via-poses or waypoint poses the path was routed through
   float max_penetration_m = 0.0f;  // after routing
   std::vector<glm::quat> frames;   // (k-1) * joint_count, frame-major
   std::vector<std::uint8_t> exempt;

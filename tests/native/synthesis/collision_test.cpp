@@ -443,5 +443,154 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
   RecordProperty("worst_key_pose_arm_depth_mm", std::to_string(worst_key * 1000.0f));
 }
 
+// The transitions from and back to the rest pose of a hand at the FAR side's beside places (fist,
+// pointing and flat hands, touch, close and no contact, from the forehead to below the waist): the
+// arm comes forward first and only then across (transition.cpp's waypoint chain), so no frame of
+// the clip is deeper in the trunk than the key pose itself, or 5 mm. Before the chain, with the
+// clavicle protraction and the arm slerped apart and one blended via-pose, the project avatar's
+// fist at shoulder_top (touch) cut through by 120 mm in its rest transition (key pose 7.6 mm);
+// with the fist across the body at shoulder_top by 105/119/107 mm (touch/close/none; now 18/8.7/5.9,
+// the key poses') and at the shoulders by 105/77 mm (touch/close; now 6.0/3.9);
+// the reference humanoid's flat hand at the waist (touch) by 91 mm (key 0.5 mm) and below the
+// waist by 75 / 64 mm (close / none; key poses 27 / 18 mm); fists and pointing hands below the
+// waist by 32-129 mm on both rigs (now each is its key pose's depth). The key poses below the
+// chest stay deep (known gaps, docs/SYNTHESIS.md); this test bounds only what the transitions add.
+// Exceptions, measured after the chain and rounded up, where a transition is still deeper than
+// the key pose (from the stomach down): listed in `known` with what it was
+// before.
+TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
+  struct Case { std::string rig; int shape; BodyLevel level; Contact contact; };
+  struct Known { Case c; float clip_mm; };
+  // shape: 0 flat, 1 fist, 2 pointing index (fingers up, palm in); 3 fist across the body
+  // (fingers to the left), 4 pointing up-left (the previous measurements' hands).
+  // clip_mm: measured now, rounded up (before the chain, in brackets: arm depth in the clip; the
+  // plan minimises the report's depth, hand included, which no case made worse).
+  const std::vector<Known> known = {
+      {{"reference", 0, BodyLevel::Waist, Contact::Close}, 32.0f},    // 31.3 (25.7; report 33.5 -> 31.6)
+      {{"reference", 0, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.2 (32.4)
+      {{"reference", 1, BodyLevel::Stomach, Contact::Close}, 8.5f},   // 7.9 (7.9)
+      {{"reference", 1, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.5 (15.2; report 31.1 both)
+      {{"reference", 1, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
+      {{"reference", 2, BodyLevel::Stomach, Contact::Close}, 8.5f},   // 8.0 (8.0)
+      {{"reference", 2, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.6 (16.1; report 28.8 both)
+      {{"reference", 2, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
+      {{"reference", 2, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.1 (36.9)
+      {{"avatar", 0, BodyLevel::BelowWaist, Contact::Touch}, 12.0f},  // 11.1 (14.1)
+      // Across the body (fist fingers to the left, pointing hand up-left):
+      {{"reference", 3, BodyLevel::Belly, Contact::Touch}, 30.0f},    // 29.4 (21.3; report 40.2 both)
+      {{"reference", 3, BodyLevel::Belly, Contact::Close}, 23.0f},    // 22.7 (30.5)
+      {{"reference", 3, BodyLevel::Waist, Contact::Touch}, 37.5f},    // 37.0 (35.8; report 38.1 -> 37.0)
+      {{"reference", 4, BodyLevel::Stomach, Contact::Close}, 10.0f},  // 9.6 (9.6)
+      {{"reference", 4, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.6 (14.9; report 30.0 both)
+      {{"avatar", 3, BodyLevel::Waist, Contact::Close}, 14.5f},       // 13.9 (13.9)
+      {{"avatar", 4, BodyLevel::BelowWaist, Contact::Touch}, 9.5f},   // 9.1 (13.7)
+  };
+  struct Rig_ { std::string name; avatar::Avatar avatar; };
+  std::vector<Rig_> rigs;
+  rigs.push_back({"reference", make_reference_humanoid()});
+  const std::string model = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
+  if (std::ifstream(model).good()) {
+    SigningAvatar sa = load_signing_avatar_file(model);
+    ASSERT_TRUE(sa.ok()) << sa.error;
+    rigs.push_back({"avatar", std::move(sa.avatar)});
+  }
+  const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,        BodyLevel::Mouth,
+                              BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
+                              BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
+                              BodyLevel::Belly,    BodyLevel::Waist,       BodyLevel::BelowWaist};
+  const notation::HandShape shapes[] = {flat(), fist(), index_point(), fist(), index_point()};
+  const Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+  float worst_added = 0.0f;
+  for (const Rig_& rg : rigs) {
+    Synthesizer synth(rg.avatar);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
+    for (int shape = 0; shape < 5; ++shape)
+      for (BodyLevel level : levels)
+        for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
+          notation::SignSpec s = sign_at(shapes[shape], level, Side::LeftBeside, c);
+          s.dominant.orientation.extended_finger = fingers[shape];
+          s.dominant.orientation.palm = {0, 0, -1};
+          SynthesisResult r = synth.sign(s, SynthesisOptions{});
+          ASSERT_TRUE(r.ok()) << r.errors[0].message;
+          float key = 0.0f, clip = 0.0f;
+          crossing_arm_depths(ctx, r, kRight, &key, &clip);
+          float bound_mm = std::max(key * 1000.0f, 5.0f) + 0.5f;  // 0.5 mm: sampling of the key pose's hold
+          for (const Known& k : known)
+            if (k.c.rig == rg.name && k.c.shape == shape && k.c.level == level && k.c.contact == c)
+              bound_mm = k.clip_mm;
+          const std::string where = rg.name + " shape " + std::to_string(shape) + " level " +
+                                    std::to_string(static_cast<int>(level)) + " contact " +
+                                    std::to_string(static_cast<int>(c));
+          EXPECT_LE(clip * 1000.0f, bound_mm) << where << " (key pose " << key * 1000.0f << " mm)";
+          worst_added = std::max(worst_added, clip - key);
+        }
+  }
+  RecordProperty("worst_depth_added_by_a_transition_mm", std::to_string(worst_added * 1000.0f));
+}
+
+// Sign to sign across the body: from a far-side beside place (flat, fist, pointing hand; touch
+// and close) to the dominant side's beside place and back, the transitions route round the front
+// like the rest transitions. The arm's depth in the trunk over the transition frames stays within
+// the deeper of the signs' own depth and 5 mm, plus a margin measured per rig: before the
+// waypoint chain the transitions added up to 127 mm (reference) and 104 mm (project avatar) over
+// that in this set; now 1.6 mm and 0 (bounds: 2 mm, and 0.5 mm for float noise). A wider sweep
+// (four far levels, the near side and beside it: 192 phrases a rig) still finds up to 7.3 / 11 mm
+// added in 16 / 13 phrases (before: 127 / 126 mm in 68 / 49), docs/SYNTHESIS.md.
+TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
+  struct Rig_ { std::string name; avatar::Avatar avatar; float excess_mm; };
+  std::vector<Rig_> rigs;
+  rigs.push_back({"reference", make_reference_humanoid(), 2.0f});
+  const std::string model = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
+  if (std::ifstream(model).good()) {
+    SigningAvatar sa = load_signing_avatar_file(model);
+    ASSERT_TRUE(sa.ok()) << sa.error;
+    rigs.push_back({"avatar", std::move(sa.avatar), 0.5f});
+  }
+  const notation::HandShape shapes[] = {flat(), fist(), index_point()};
+  SynthesisOptions opt;
+  opt.start_from_rest = false;
+  for (const Rig_& rg : rigs) {
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(rg.avatar, opt, &ctx, &error)) << error;
+    Synthesizer synth(rg.avatar);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    float worst_excess = 0.0f;
+    for (int shape = 0; shape < 3; ++shape)
+      for (BodyLevel far : {BodyLevel::ShoulderTop, BodyLevel::Chest, BodyLevel::Waist})
+        for (BodyLevel near : {BodyLevel::Chest, BodyLevel::Waist})
+          for (Contact c : {Contact::Touch, Contact::Close}) {
+            notation::SignSpec a = sign_at(shapes[shape], far, Side::LeftBeside, c);
+            a.dominant.orientation.extended_finger = {0, 1, 0};
+            a.dominant.orientation.palm = {0, 0, -1};
+            notation::SignSpec b = sign_at(shapes[shape], near, Side::RightBeside, Contact::None);
+            SynthesisResult r = synthesize_phrase(items_of({a, b, a}), rg.avatar, opt);
+            ASSERT_TRUE(r.ok()) << r.errors[0].message;
+            float in_transitions = 0.0f, in_signs = 0.0f;
+            PoseBuilder pb(ctx.rig);
+            for (const auto& sg : r.clip.segments) {
+              const int f0 = static_cast<int>(std::lround(sg.start_s * r.clip.fps));
+              const int f1 = std::min(r.clip.frame_count - 1, static_cast<int>(std::lround(sg.end_s * r.clip.fps)));
+              for (int f = f0; f <= f1; ++f) {
+                pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * ctx.rig.joint_count]);
+                const bool contact = r.report.intended_contact[f] & exempt_bit(kRight, false);
+                const float d = arm_penetration(ctx.body, pb, kRight, true, contact, false).depth_m;
+                float& into = sg.kind == ClipSegment::Kind::Transition ? in_transitions : in_signs;
+                into = std::max(into, d);
+              }
+            }
+            const float excess = in_transitions - std::max(in_signs, 0.005f);
+            EXPECT_LE(excess * 1000.0f, rg.excess_mm)
+                << rg.name << " shape " << shape << " far level " << static_cast<int>(far) << " near level "
+                << static_cast<int>(near) << " contact " << static_cast<int>(c);
+            worst_excess = std::max(worst_excess, excess);
+          }
+    RecordProperty(rg.name + "_worst_transition_excess_mm", std::to_string(worst_excess * 1000.0f));
+  }
+}
+
 }  // namespace
 }  // namespace sw::synthesis
