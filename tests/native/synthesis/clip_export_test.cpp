@@ -12,7 +12,6 @@
 #include "skeleton/bvh.h"
 #include "synthesis/clip_sampler.h"
 #include "synthesis/phrase_text.h"
-#include "synthesis/signing_avatar.h"
 #include "synthesis/synthesize.h"
 #include "synthesis_fixture.h"
 
@@ -104,9 +103,10 @@ TEST(SynthesisClip, GlbIsAValidGltfWithSkeletonAndAnimation) {
 // morph weights as a "weights" channel on the mesh node. Before, the export dropped both, so a
 // downloaded clip signed with a frozen face.
 TEST(SynthesisClip, GlbCarriesTheFaceMorphTargetsAndTheirWeights) {
-  SigningAvatar sa = load_signing_avatar_file(std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb");
-  if (!sa.ok()) GTEST_SKIP() << "models/signweave-avatar.glb: " << sa.error;
-  const avatar::Avatar& av = sa.avatar;
+  ProjectAvatar project = load_project_avatar();
+  if (!project.present) GTEST_SKIP() << "models/signweave-avatar.glb is not in this checkout";
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  const avatar::Avatar& av = project.avatar;
   ASSERT_FALSE(av.morphs.empty());
   Synthesizer synth(av);
   ASSERT_TRUE(synth.ok()) << synth.error();

@@ -9,10 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <map>
 
-#include "synthesis/signing_avatar.h"
 #include "synthesis/transition.h"
 #include "synthesis_fixture.h"
 
@@ -295,12 +293,9 @@ TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
   std::vector<Rig_> rigs;
   rigs.push_back({make_reference_humanoid(), &all_places});
   rigs.push_back({make_rotated_variant(0.9f), &all_places});
-  const std::string model = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
-  if (std::ifstream(model).good()) {
-    SigningAvatar sa = load_signing_avatar_file(model);
-    ASSERT_TRUE(sa.ok()) << sa.error;
-    rigs.push_back({std::move(sa.avatar), &project_places});
-  }
+  ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({std::move(project.avatar), &project_places});
   struct Hand { notation::HandShape shape; Direction finger, palm; };
   const Hand hands[] = {
       {flat(), {0, 1, 0}, {0, 0, -1}},   // flat, palm on the body
@@ -374,12 +369,9 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
   // Reference humanoid, belly: 7.1 mm close, 7.4 mm none (the upper arm by the chest's lower
   // corner; the elbow cannot come further forward with the hand that low and that far across).
   rigs.push_back({"reference", make_reference_humanoid(), {{BodyLevel::Belly, {8.0f, 8.0f}}}});
-  const std::string model = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
-  if (std::ifstream(model).good()) {
-    SigningAvatar sa = load_signing_avatar_file(model);
-    ASSERT_TRUE(sa.ok()) << sa.error;
-    rigs.push_back({"avatar", std::move(sa.avatar), {}});
-  }
+  ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar), {}});
   const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,      BodyLevel::Mouth,
                               BodyLevel::Chin,     BodyLevel::Neck,      BodyLevel::Shoulders,
                               BodyLevel::ShoulderTop, BodyLevel::Chest,  BodyLevel::Stomach,
@@ -488,12 +480,9 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
   struct Rig_ { std::string name; avatar::Avatar avatar; };
   std::vector<Rig_> rigs;
   rigs.push_back({"reference", make_reference_humanoid()});
-  const std::string model = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
-  if (std::ifstream(model).good()) {
-    SigningAvatar sa = load_signing_avatar_file(model);
-    ASSERT_TRUE(sa.ok()) << sa.error;
-    rigs.push_back({"avatar", std::move(sa.avatar)});
-  }
+  ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
   const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,        BodyLevel::Mouth,
                               BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
                               BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
@@ -543,12 +532,9 @@ TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
   struct Rig_ { std::string name; avatar::Avatar avatar; float excess_mm; };
   std::vector<Rig_> rigs;
   rigs.push_back({"reference", make_reference_humanoid(), 2.0f});
-  const std::string model = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
-  if (std::ifstream(model).good()) {
-    SigningAvatar sa = load_signing_avatar_file(model);
-    ASSERT_TRUE(sa.ok()) << sa.error;
-    rigs.push_back({"avatar", std::move(sa.avatar), 0.5f});
-  }
+  ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar), 0.5f});
   const notation::HandShape shapes[] = {flat(), fist(), index_point()};
   SynthesisOptions opt;
   opt.start_from_rest = false;

@@ -15,6 +15,7 @@
 #include "synthesis/phrase_text.h"
 #include "synthesis/reference_humanoid.h"
 #include "synthesis/rig.h"
+#include "synthesis/signing_avatar.h"
 #include "synthesis/synthesize.h"
 
 namespace sw::synthesis::testing {
@@ -129,5 +130,24 @@ inline int first_sign_frame(const Clip& clip) {
 }
 
 inline float deg(float rad) { return rad * 57.2957795f; }
+
+// The project's avatar (models/signweave-avatar.glb) for tests that run on it beside the
+// procedural rigs. A checkout without the model: not present, no error; a model the loader
+// refuses: present, with its message (the test should fail on it).
+struct ProjectAvatar {
+  bool present = false;
+  avatar::Avatar avatar;
+  std::string error;
+};
+inline ProjectAvatar load_project_avatar() {
+  ProjectAvatar p;
+  const std::string path = std::string(SIGNWEAVE_SOURCE_DIR) + "/models/signweave-avatar.glb";
+  if (!std::ifstream(path).good()) return p;
+  p.present = true;
+  SigningAvatar sa = load_signing_avatar_file(path);
+  if (sa.ok()) p.avatar = std::move(sa.avatar);
+  else p.error = sa.error;
+  return p;
+}
 
 }  // namespace sw::synthesis::testing
