@@ -287,8 +287,12 @@ struct Solver {
 // dominant hand comes forward along the body's forward axis by the measured overlap of forearms
 // or hands plus 4 mm (so they touch, 5 mm rule), with a fresh swivel, until clear (4 rounds: the
 // forearm's angle changes as the hand moves, so one step can fall short).
+//
+// `near`: the swivels this pose is reached from (a movement's goal: its start). The fresh swivel
+// is then chosen near them (arm_ik.h ArmTarget::near_swivel_rad), so the separation does not
+// swing the elbow to another branch on the way to the goal.
 void separate_crossed_hands(Solver& solver, const std::array<HandPlan, 2>& plans,
-                            std::array<HandState, 2>* key) {
+                            std::array<HandState, 2>* key, const std::array<HandState, 2>* near = nullptr) {
   const SynthContext& ctx = solver.ctx;
   const Rig& rig = ctx.rig;
   if (!ctx.options.avoid_collisions || !plans[0].active || !plans[1].active) return;
@@ -326,6 +330,10 @@ void separate_crossed_hands(Solver& solver, const std::array<HandPlan, 2>& plans
     (*key)[0].target += (pen.depth_m + 0.004f) * dir;
     ArmTarget t = target_of(0);
     t.auto_swivel = true;
+    if (near) {
+      t.has_near_swivel = true;
+      t.near_swivel_rad = (*near)[0].swivel;
+    }
     (*key)[0].swivel = solve_arm(rig, d, t).swivel_rad;
   }
 }
@@ -612,6 +620,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         for (int i = 0; i < 2; ++i)
           for (const auto& m : ms[i]) duration = std::max(duration, movement_duration_s(m));
       } else {
+        bool goal_changed = false;
         for (int i = 0; i < 2; ++i) {
           if (!plans[i].active || seg.step >= static_cast<int>(plans[i].steps.size())) continue;
           ms[i] = plans[i].steps[seg.step];
@@ -629,6 +638,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
               changed = true;
             }
             if (changed) {
+              goal_changed = true;
               bool ok = true;
               HandState g = solver.key_state(plans[i], spec, &ok, nullptr, &goal[i].swivel);
               if (!ok) return false;
@@ -695,6 +705,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             }
           }
         }
+        // Hands that meet at the goal are laid apart there, as at the key pose (BOOK: the
+        // palms-together hands turn palms up where they met and overlap). Left to the per-frame
+        // push (which moves the second hand solved, out of the first), the separation came on within a few frames at the
+        // end of the movement and its residual rounds jumped (the left wrist 83 mm in a frame,
+        // 86 mm change of step on the avatar). Decided at the goal, it is interpolated along the
+        // movement like the rest of the state.
+        if (goal_changed) separate_crossed_hands(solver, plans, &goal, &from);
         for (int i = 0; i < 2; ++i)
           for (const auto& m : ms[i]) relocated[i] = relocated[i] || m.to_location.has_value();
         seg_start[seg.step] = from;
