@@ -132,21 +132,19 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
   if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
   Synthesizer synth(avatar_);
   ASSERT_TRUE(synth.ok()) << synth.error();
-  // Known gaps, measured (the worse of the two rigs, rounded up to 10 mm) and held to their own
-  // bounds so they cannot grow unnoticed; every other sign meets the human bounds above.
-  // LOOK (61 mm
-  // change on the avatar as the V hand starts forward from the eyes); STUDENT (98 mm step on the
-  // avatar, 66 mm change on the reference: the 180-degree turn from the fingertips on the
-  // forehead to the flat hand pointing forward in one 0.35 s replace); TELL, THANK-YOU (78 mm
-  // step of the elbow on the reference as the movement starts from the chin, 71/94 mm change: a
-  // residual swivel fix of the last ramp round, and the fingers-forward goal solved at the
-  // chin). What fixed the others (BAD, DAY, DEAF, HOSPITAL, LEARN, MORNING came off this list
-  // with swivel continuity and the forearm-carried elbow contact; BOOK, 86 mm change on the
-  // avatar, with hands parted at a movement's goal, now 5/4 mm): CHANGELOG.md;
-  // docs/SYNTHESIS.md, known issues.
+  // Known gaps, measured (the worse of the two rigs, rounded up by a few mm) and held to their
+  // own bounds so they cannot grow unnoticed; every other sign meets the human bounds above.
+  // LOOK (61 mm change on the avatar as the V hand starts forward from the eyes); STUDENT (98 mm
+  // step on the avatar, 66 mm change on the reference: the 180-degree turn from the fingertips
+  // on the forehead to the flat hand pointing forward in one 0.35 s replace); THANK-YOU (71 mm
+  // change of the wrist on the reference at the end of its path, where the hand turns out of
+  // the body: the fingers-forward goal is solved at the chin). What fixed the others (BAD, DAY,
+  // DEAF, HOSPITAL, LEARN, MORNING came off this list with swivel continuity and the
+  // forearm-carried elbow contact; BOOK, 86 mm change on the avatar, with hands parted at a
+  // movement's goal; TELL, 78 mm elbow step on the reference, with the swivel fix kept to the
+  // side earlier ramp rounds turned the elbow): CHANGELOG.md; docs/SYNTHESIS.md, known issues.
   const std::map<std::string, Bound> known = {
-      {"LOOK", {100, 70}},       {"STUDENT", {100, 70}},
-      {"TELL", {100, 80}},     {"THANK-YOU", {100, 100}}};
+      {"LOOK", {100, 65}}, {"STUDENT", {100, 70}}, {"THANK-YOU", {100, 75}}};
   int signs = 0, smooth = 0;
   for (const testing::LexiconSign& sign : testing::lexicon_signs(text)) {
     const std::string& gloss = sign.gloss;
