@@ -61,7 +61,7 @@ std::vector<glm::quat> ramp_turns(const std::vector<glm::quat>& fix, int radius)
   return out;
 }
 
-SwivelChoice nearest_clear_swivel(float base_depth_m, float clear_m, float prefer,
+SwivelChoice nearest_clear_swivel(float base_depth_m, float clear_m, float prefer, float min_gain_m,
                                   const std::function<float(float offset_rad, bool* usable)>& depth_at) {
   SwivelChoice best{0.0f, base_depth_m};
   const float first_sign = prefer < 0.0f ? -1.0f : 1.0f;
@@ -85,6 +85,7 @@ SwivelChoice nearest_clear_swivel(float base_depth_m, float clear_m, float prefe
       }
     }
   }
+  if (best.depth_m > clear_m && base_depth_m - best.depth_m < min_gain_m) return {0.0f, base_depth_m};
   return best;
 }
 

@@ -31,13 +31,14 @@ std::vector<glm::quat> ramp_turns(const std::vector<glm::quat>& fix, int radius)
 // side is taken only if the preferred side has none within kPreferSlackSteps more steps.
 // `depth_at(offset, &usable)` poses the arm at base + offset and returns its depth (m); an
 // unusable offset (a touch that no longer touches) is skipped. Without a clear offset, the
-// deepest improvement over `base_depth_m` wins (by more than 0.1 mm); none: offset 0.
+// largest improvement over `base_depth_m` wins if it gains at least `min_gain_m` (and more than
+// 0.1 mm); none: offset 0.
 constexpr int kPreferSlackSteps = 3;
 struct SwivelChoice {
   float offset_rad = 0.0f;
   float depth_m = 0.0f;
 };
-SwivelChoice nearest_clear_swivel(float base_depth_m, float clear_m, float prefer,
+SwivelChoice nearest_clear_swivel(float base_depth_m, float clear_m, float prefer, float min_gain_m,
                                   const std::function<float(float offset_rad, bool* usable)>& depth_at);
 
 }  // namespace sw::synthesis

@@ -775,7 +775,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // one. Then this frame uses the nearest swivel that clears it (the hand's target, orientation
   // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
   auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
-                       PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel, float prefer) {
+                       PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel, float prefer,
+                       float min_gain_m) {
     // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
     // within its limits, and the hand must not turn into the body instead.
     auto depth_of = [&]() {
@@ -802,7 +803,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     // +0.1 rad, where +0.2 also cleared the first), and the ramp, which follows the larger
     // neighbour, then jumped by 0.3 rad between them (the elbow 78 mm in a frame).
     std::array<ArmPose, 25> tried;  // by step: 12 + k on the + side, 12 - k on the - side
-    const SwivelChoice choice = nearest_clear_swivel(depth, 0.002f, prefer, [&](float offset, bool* usable) {
+    const SwivelChoice choice = nearest_clear_swivel(depth, 0.002f, prefer, min_gain_m, [&](float offset, bool* usable) {
       t->swivel_rad = base + offset;
       ArmPose& ap = tried[static_cast<size_t>(12 + std::lround(offset * 10.0f))];
       ap = solve_arm(rig, plan.side, *t);
@@ -862,6 +863,14 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // in a frame), 9 rad/s raised STUDENT's step change to 96 mm.
   constexpr float kWristFlipRadPerS = 15.0f;
   constexpr float kWristTurnRadPerS = 6.0f;
+  // On a path (a frame whose states differ from the previous one's), a swivel that leaves the
+  // arm in the body gaining less than kMinSwivelGainM is no fix: among near-equal depths the
+  // best moved by noise from frame to frame (THANK-YOU at the end of its path, arm 80 mm in at
+  // any swivel: +0.1 rad gaining 0.1 mm at one frame, +0.6 gaining 0.4 mm at the next, each
+  // with its own turn of the hand: 71 mm change of step). Held frames keep every gain (a key
+  // pose has no neighbour to jump against, and the transitions start from it: 1 mm there
+  // deepened the far-side rest transitions by up to 2 mm).
+  constexpr float kMinSwivelGainM = 0.001f;
   // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
   std::vector<std::array<ArmPose, 2>> solved(frames.size());
   std::vector<std::array<char, 2>> continued(frames.size(), {0, 0});
@@ -901,6 +910,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         continue;
       }
       const int pushes_before = out->pushes;
+      const bool moving = f > 0 && !same_states(frames[f], frames[f - 1]);
       PoseBuilder pb(rig);
       // Inactive hands keep the rest pose.
       for (int i = 0; i < 2; ++i) {
@@ -972,7 +982,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         swivel_fixes[f][i] = 0.0f;
         if (ctx.options.avoid_collisions)
           clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i],
-                    swivel_ramped[f][i] > 0.05f ? 1.0f : swivel_ramped[f][i] < -0.05f ? -1.0f : 0.0f);
+                    swivel_ramped[f][i] > 0.05f ? 1.0f : swivel_ramped[f][i] < -0.05f ? -1.0f : 0.0f,
+                    moving ? kMinSwivelGainM : 0.0f);
       }
       pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
       out->exempt[f] = exempt;

@@ -83,14 +83,14 @@ TEST(SynthesisFrameCorrections, TheNearestClearSwivelKeepsToThePreferredSide) {
     return tell_depth(offset);
   };
   // No preference: the nearest (-0.1).
-  SwivelChoice none = nearest_clear_swivel(0.0095f, 0.002f, 0.0f, depth);
+  SwivelChoice none = nearest_clear_swivel(0.0095f, 0.002f, 0.0f, 0.0f, depth);
   EXPECT_NEAR(none.offset_rad, -0.1f, 1e-5f);
   EXPECT_EQ(none.depth_m, 0.0f);
   // Earlier rounds turned this elbow up (+): +0.2, one step further but the same way as the
   // neighbours' fixes (the nearest flipped the sign between two frames: 0.3 rad in one frame).
-  SwivelChoice up = nearest_clear_swivel(0.0095f, 0.002f, 1.0f, depth);
+  SwivelChoice up = nearest_clear_swivel(0.0095f, 0.002f, 1.0f, 0.0f, depth);
   EXPECT_NEAR(up.offset_rad, 0.2f, 1e-5f);
-  SwivelChoice down = nearest_clear_swivel(0.0095f, 0.002f, -1.0f, depth);
+  SwivelChoice down = nearest_clear_swivel(0.0095f, 0.002f, -1.0f, 0.0f, depth);
   EXPECT_NEAR(down.offset_rad, -0.1f, 1e-5f);
   // The preferred side only while it is at most kPreferSlackSteps further than the other.
   auto far_up = [](float offset, bool* usable) {
@@ -98,30 +98,39 @@ TEST(SynthesisFrameCorrections, TheNearestClearSwivelKeepsToThePreferredSide) {
     const int k = static_cast<int>(std::lround(offset * 10.0f));
     return k == -1 || k >= 1 + kPreferSlackSteps + 1 ? 0.0f : 0.01f;
   };
-  EXPECT_NEAR(nearest_clear_swivel(0.01f, 0.002f, 1.0f, far_up).offset_rad, -0.1f, 1e-5f);
+  EXPECT_NEAR(nearest_clear_swivel(0.01f, 0.002f, 1.0f, 0.0f, far_up).offset_rad, -0.1f, 1e-5f);
 }
 
-TEST(SynthesisFrameCorrections, AnUnusableSwivelIsSkippedAndWithoutAClearOneTheShallowestWins) {
+TEST(SynthesisFrameCorrections, AnUnusableSwivelIsSkippedAndWithoutAClearOneTheShallowestWinsIfItGainsEnough) {
   // +0.1 would clear but loses the touch: skipped, -0.2 is taken.
   auto depth = [](float offset, bool* usable) {
     const int k = static_cast<int>(std::lround(offset * 10.0f));
     *usable = k != 1;
     return k == 1 || k == -2 ? 0.0f : 0.01f;
   };
-  EXPECT_NEAR(nearest_clear_swivel(0.01f, 0.002f, 0.0f, depth).offset_rad, -0.2f, 1e-5f);
+  EXPECT_NEAR(nearest_clear_swivel(0.01f, 0.002f, 0.0f, 0.0f, depth).offset_rad, -0.2f, 1e-5f);
   // Nothing clears: the shallowest (+0.7, 4 mm) wins; nothing better than the base: offset 0.
   auto never = [](float offset, bool* usable) {
     *usable = true;
     return std::fabs(offset - 0.7f) < 1e-3f ? 0.004f : 0.009f;
   };
-  SwivelChoice c = nearest_clear_swivel(0.009f, 0.002f, 0.0f, never);
+  SwivelChoice c = nearest_clear_swivel(0.009f, 0.002f, 0.0f, 0.0f, never);
   EXPECT_NEAR(c.offset_rad, 0.7f, 1e-5f);
   EXPECT_NEAR(c.depth_m, 0.004f, 1e-7f);
+  // On a path, a gain under min_gain_m is no fix (THANK-YOU: +0.1 rad gaining 0.1 mm at one
+  // frame, +0.6 gaining 0.4 mm at the next); a clear offset is a fix whatever it gains.
+  EXPECT_EQ(nearest_clear_swivel(0.009f, 0.002f, 0.0f, 0.006f, never).offset_rad, 0.0f);
+  EXPECT_NEAR(nearest_clear_swivel(0.009f, 0.002f, 0.0f, 0.004f, never).offset_rad, 0.7f, 1e-5f);
+  auto just_clear = [](float offset, bool* usable) {
+    *usable = true;
+    return offset > 0.25f ? 0.0015f : 0.0025f;
+  };
+  EXPECT_NEAR(nearest_clear_swivel(0.0025f, 0.002f, 0.0f, 0.001f, just_clear).offset_rad, 0.3f, 1e-5f);
   auto worse = [](float, bool* usable) {
     *usable = true;
     return 0.02f;
   };
-  SwivelChoice w = nearest_clear_swivel(0.009f, 0.002f, 1.0f, worse);
+  SwivelChoice w = nearest_clear_swivel(0.009f, 0.002f, 1.0f, 0.0f, worse);
   EXPECT_EQ(w.offset_rad, 0.0f);
   EXPECT_EQ(w.depth_m, 0.009f);
 }
