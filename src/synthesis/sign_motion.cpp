@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "synthesis/arm_ik.h"
+#include "synthesis/frame_corrections.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/movement.h"
 #include "synthesis/orientation.h"
@@ -287,8 +288,12 @@ struct Solver {
 // dominant hand comes forward along the body's forward axis by the measured overlap of forearms
 // or hands plus 4 mm (so they touch, 5 mm rule), with a fresh swivel, until clear (4 rounds: the
 // forearm's angle changes as the hand moves, so one step can fall short).
+//
+// `near`: the swivels this pose is reached from (a movement's goal: its start). The fresh swivel
+// is then chosen near them (arm_ik.h ArmTarget::near_swivel_rad), so the separation does not
+// swing the elbow to another branch on the way to the goal.
 void separate_crossed_hands(Solver& solver, const std::array<HandPlan, 2>& plans,
-                            std::array<HandState, 2>* key) {
+                            std::array<HandState, 2>* key, const std::array<HandState, 2>* near = nullptr) {
   const SynthContext& ctx = solver.ctx;
   const Rig& rig = ctx.rig;
   if (!ctx.options.avoid_collisions || !plans[0].active || !plans[1].active) return;
@@ -326,6 +331,10 @@ void separate_crossed_hands(Solver& solver, const std::array<HandPlan, 2>& plans
     (*key)[0].target += (pen.depth_m + 0.004f) * dir;
     ArmTarget t = target_of(0);
     t.auto_swivel = true;
+    if (near) {
+      t.has_near_swivel = true;
+      t.near_swivel_rad = (*near)[0].swivel;
+    }
     (*key)[0].swivel = solve_arm(rig, d, t).swivel_rad;
   }
 }
@@ -612,6 +621,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         for (int i = 0; i < 2; ++i)
           for (const auto& m : ms[i]) duration = std::max(duration, movement_duration_s(m));
       } else {
+        bool goal_changed = false;
         for (int i = 0; i < 2; ++i) {
           if (!plans[i].active || seg.step >= static_cast<int>(plans[i].steps.size())) continue;
           ms[i] = plans[i].steps[seg.step];
@@ -629,6 +639,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
               changed = true;
             }
             if (changed) {
+              goal_changed = true;
               bool ok = true;
               HandState g = solver.key_state(plans[i], spec, &ok, nullptr, &goal[i].swivel);
               if (!ok) return false;
@@ -695,6 +706,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             }
           }
         }
+        // Hands that meet at the goal are laid apart there, as at the key pose (BOOK: the
+        // palms-together hands turn palms up where they met and overlap). Left to the per-frame
+        // push (which moves the second hand solved, out of the first), the separation came on within a few frames at the
+        // end of the movement and its residual rounds jumped (the left wrist 83 mm in a frame,
+        // 86 mm change of step on the avatar). Decided at the goal, it is interpolated along the
+        // movement like the rest of the state.
+        if (goal_changed) separate_crossed_hands(solver, plans, &goal, &from);
         for (int i = 0; i < 2; ++i)
           for (const auto& m : ms[i]) relocated[i] = relocated[i] || m.to_location.has_value();
         seg_start[seg.step] = from;
@@ -757,7 +775,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // one. Then this frame uses the nearest swivel that clears it (the hand's target, orientation
   // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
   auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
-                       PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel) {
+                       PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel, float prefer,
+                       float min_gain_m) {
     // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
     // within its limits, and the hand must not turn into the body instead.
     auto depth_of = [&]() {
@@ -778,19 +797,23 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     const float base_reach = base_pose.reach_error_m;
     float best_depth = depth, best_swivel = base;
     ArmPose best_pose = base_pose;  // the winner's pose, kept (solving it again gave the same)
-    for (int k = 1; k <= 12 && best_depth > 0.002f; ++k) {
-      for (float sign : {1.0f, -1.0f}) {
-        t->swivel_rad = base + sign * 0.1f * static_cast<float>(k);
-        ArmPose ap = solve_arm(rig, plan.side, *t);
-        if (ap.reach_error_m > base_reach + 0.002f) continue;  // a touch must still touch
-        float d = depth_with(ap);
-        if (d < best_depth - 1e-4f) {
-          best_depth = d;
-          best_swivel = t->swivel_rad;
-          best_pose = ap;
-        }
-        if (best_depth <= 0.002f) break;
-      }
+    // With a preferred side (the way earlier ramp rounds already turned this frame's elbow),
+    // the nearest clear swivel on the other side no longer wins at once: it flipped the fix's
+    // sign between neighbouring frames (TELL's, THANK-YOU's elbow leaving the chin: -0.1 then
+    // +0.1 rad, where +0.2 also cleared the first), and the ramp, which follows the larger
+    // neighbour, then jumped by 0.3 rad between them (the elbow 78 mm in a frame).
+    std::array<ArmPose, 25> tried;  // by step: 12 + k on the + side, 12 - k on the - side
+    const SwivelChoice choice = nearest_clear_swivel(depth, 0.002f, prefer, min_gain_m, [&](float offset, bool* usable) {
+      t->swivel_rad = base + offset;
+      ArmPose& ap = tried[static_cast<size_t>(12 + std::lround(offset * 10.0f))];
+      ap = solve_arm(rig, plan.side, *t);
+      *usable = ap.reach_error_m <= base_reach + 0.002f;  // a touch must still touch
+      return *usable ? depth_with(ap) : 0.0f;
+    });
+    if (choice.offset_rad != 0.0f) {
+      best_depth = choice.depth_m;
+      best_swivel = base + choice.offset_rad;
+      best_pose = tried[static_cast<size_t>(12 + std::lround(choice.offset_rad * 10.0f))];
     }
     t->swivel_rad = best_swivel;
     *applied_swivel = best_swivel - base;
@@ -820,6 +843,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // The hand turns and swivel offsets clear_arm applied, per frame and hand (identity / 0: none).
   std::vector<std::array<glm::quat, 2>> turns(frames.size());
   std::vector<std::array<float, 2>> swivel_fixes(frames.size());
+  // The swivel offsets the ramp rounds added to each frame so far (clear_arm's preferred side).
+  std::vector<std::array<float, 2>> swivel_ramped(frames.size(), {0.0f, 0.0f});
   // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
   std::vector<std::array<glm::vec3, 2>> push_offsets(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
   // A wrist that flips: where a hand's requested orientation is out of the wrist's reach, the
@@ -838,6 +863,14 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // in a frame), 9 rad/s raised STUDENT's step change to 96 mm.
   constexpr float kWristFlipRadPerS = 15.0f;
   constexpr float kWristTurnRadPerS = 6.0f;
+  // On a path (a frame whose states differ from the previous one's), a swivel that leaves the
+  // arm in the body gaining less than kMinSwivelGainM is no fix: among near-equal depths the
+  // best moved by noise from frame to frame (THANK-YOU at the end of its path, arm 80 mm in at
+  // any swivel: +0.1 rad gaining 0.1 mm at one frame, +0.6 gaining 0.4 mm at the next, each
+  // with its own turn of the hand: 71 mm change of step). Held frames keep every gain (a key
+  // pose has no neighbour to jump against, and the transitions start from it: 1 mm there
+  // deepened the far-side rest transitions by up to 2 mm).
+  constexpr float kMinSwivelGainM = 0.001f;
   // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
   std::vector<std::array<ArmPose, 2>> solved(frames.size());
   std::vector<std::array<char, 2>> continued(frames.size(), {0, 0});
@@ -877,6 +910,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         continue;
       }
       const int pushes_before = out->pushes;
+      const bool moving = f > 0 && !same_states(frames[f], frames[f - 1]);
       PoseBuilder pb(rig);
       // Inactive hands keep the rest pose.
       for (int i = 0; i < 2; ++i) {
@@ -947,7 +981,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         turns[f][i] = glm::quat(1, 0, 0, 0);
         swivel_fixes[f][i] = 0.0f;
         if (ctx.options.avoid_collisions)
-          clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i]);
+          clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i],
+                    swivel_ramped[f][i] > 0.05f ? 1.0f : swivel_ramped[f][i] < -0.05f ? -1.0f : 0.0f,
+                    moving ? kMinSwivelGainM : 0.0f);
       }
       pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
       out->exempt[f] = exempt;
@@ -979,16 +1015,19 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   solve_frames(nullptr);
   // A turn decided frame by frame starts (and ends) at once: the hand would jump (a 60 degree
   // turn about a fingertip moves the wrist 17 cm in one frame). Ramp every turn in and out over
-  // the 6 frames around it (the largest of the neighbours' turns, scaled down linearly with the
-  // distance), fold the ramped turns into the frames' orientations, and solve once more.
+  // the kRamp frames around it (the largest of the neighbours' turns, scaled by the smoothstep
+  // envelope of frame_corrections.h), fold the ramped turns into the frames' orientations, and
+  // solve once more. The envelope was a linear tent over 6 frames: a turn needed by one frame
+  // (THANK-YOU's hand at the end of its path) then peaked with a kink, the wrist went out and
+  // came back at once (94 mm change of step on the reference rig; a smoothstep over 6 frames
+  // 74 mm, over 8 frames 71 mm).
   //
   // The swivel fix has the same defect: it holds the elbow (and, through the wrist limits, the
   // wrist) out of the body for the frames that need it and lets go at once (GOOD: the wrist moved
-  // 17 cm in one frame). The offsets are ramped the same way but with a smoothstep envelope over
-  // kSwivelRamp frames (zero slope at both ends, so no velocity step where the ramp starts) and
-  // added to the frames' swivels before the second solve; clear_arm then finds those frames clear
+  // 17 cm in one frame). The offsets are ramped the same way over kSwivelRamp frames and added
+  // to the frames' swivels before the second solve; clear_arm then finds those frames clear
   // and leaves them alone.
-  constexpr int kRamp = 6;
+  constexpr int kRamp = 8;
   constexpr int kSwivelRamp = 8;  // 0.27 s at 30 fps: a 1.2 rad fix moves the elbow < 4 cm/frame
   // The second solve can still find a frame that needs a correction (the corrections of the two
   // hands interact: BOOK's palms together, the left elbow cleared for 3 frames, 11 cm change of
@@ -1005,19 +1044,12 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (any_swivel) {
     const int n = out->frame_count;
     for (int i = 0; i < 2; ++i) {
-      std::vector<float> ramped(n, 0.0f);
-      for (int f = 0; f < n; ++f) {
-        float best = 0.0f;
-        for (int g = std::max(0, f - kSwivelRamp); g <= std::min(n - 1, f + kSwivelRamp); ++g) {
-          float x = static_cast<float>(std::abs(f - g)) / static_cast<float>(kSwivelRamp + 1);
-          float w = 1.0f - x * x * (3.0f - 2.0f * x);  // smoothstep down to 0 at kSwivelRamp + 1
-          float o = w * swivel_fixes[g][i];
-          if (std::abs(o) > std::abs(best)) best = o;
-        }
-        ramped[f] = best;
-      }
+      std::vector<float> fix(n);
+      for (int f = 0; f < n; ++f) fix[f] = swivel_fixes[f][i];
+      const std::vector<float> ramped = ramp_scalars(fix, kSwivelRamp);
       for (int f = 0; f < n; ++f) {
         frames[f].hand[i].swivel += ramped[f];
+        swivel_ramped[f][i] += ramped[f];
         if (ramped[f] != 0.0f) redo[f] = 1;
       }
     }
@@ -1032,16 +1064,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (any_push) {
     const int n = out->frame_count;
     for (int i = 0; i < 2; ++i) {
-      std::vector<glm::vec3> ramped(n, glm::vec3(0.0f));
-      for (int f = 0; f < n; ++f) {
-        glm::vec3 best(0.0f);
-        for (int g = std::max(0, f - kSwivelRamp); g <= std::min(n - 1, f + kSwivelRamp); ++g) {
-          float x = static_cast<float>(std::abs(f - g)) / static_cast<float>(kSwivelRamp + 1);
-          glm::vec3 o = (1.0f - x * x * (3.0f - 2.0f * x)) * push_offsets[g][i];
-          if (glm::length(o) > glm::length(best)) best = o;
-        }
-        ramped[f] = best;
-      }
+      std::vector<glm::vec3> fix(n);
+      for (int f = 0; f < n; ++f) fix[f] = push_offsets[f][i];
+      const std::vector<glm::vec3> ramped = ramp_offsets(fix, kSwivelRamp);
       for (int f = 0; f < n; ++f) {
         frames[f].hand[i].target += ramped[f];
         if (glm::length(ramped[f]) > 0.0f) redo[f] = 1;
@@ -1051,20 +1076,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (any_turn || any_swivel || any_push) {
     const int n = out->frame_count;
     for (int i = 0; any_turn && i < 2; ++i) {
-      std::vector<glm::quat> ramped(n);
-      for (int f = 0; f < n; ++f) {
-        glm::quat r = turns[f][i];
-        float best = rotation_angle(r);
-        for (int g = std::max(0, f - kRamp); g <= std::min(n - 1, f + kRamp); ++g) {
-          float w = 1.0f - static_cast<float>(std::abs(f - g)) / static_cast<float>(kRamp + 1);
-          float a = w * rotation_angle(turns[g][i]);
-          if (a > best + 1e-4f) {
-            best = a;
-            r = slerp_shortest(glm::quat(1, 0, 0, 0), turns[g][i], w);
-          }
-        }
-        ramped[f] = r;
-      }
+      std::vector<glm::quat> fix(n);
+      for (int f = 0; f < n; ++f) fix[f] = turns[f][i];
+      const std::vector<glm::quat> ramped = ramp_turns(fix, kRamp);
       for (int f = 0; f < n; ++f) {
         frames[f].hand[i].delta = ramped[f] * frames[f].hand[i].delta;
         if (rotation_angle(ramped[f]) > 0.0f) redo[f] = 1;

@@ -10,6 +10,8 @@
 // reworked in handshape.cpp), a known gap.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -130,21 +132,18 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
   if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
   Synthesizer synth(avatar_);
   ASSERT_TRUE(synth.ok()) << synth.error();
-  // Known gaps, measured (the worse of the two rigs, rounded up to 10 mm) and held to their own
-  // bounds so they cannot grow unnoticed; every other sign meets the human bounds above.
-  // BOOK (86 mm change on the avatar, 80 on the reference: the palms-up goal keeps the start's
-  // swivel and the hands meet; the per-frame push between them comes on fast); LOOK (61 mm
-  // change on the avatar as the V hand starts forward from the eyes); STUDENT (98 mm step on the
-  // avatar, 66 mm change on the reference: the 180-degree turn from the fingertips on the
-  // forehead to the flat hand pointing forward in one 0.35 s replace); TELL, THANK-YOU (78 mm
-  // step of the elbow on the reference as the movement starts from the chin, 71/94 mm change: a
-  // residual swivel fix of the last ramp round, and the fingers-forward goal solved at the
-  // chin). What fixed the others (BAD, DAY, DEAF, HOSPITAL, LEARN, MORNING came off this list
-  // with swivel continuity and the forearm-carried elbow contact): CHANGELOG.md;
-  // docs/SYNTHESIS.md, known issues.
-  const std::map<std::string, Bound> known = {
-      {"BOOK", {100, 90}},     {"LOOK", {100, 70}},       {"STUDENT", {100, 70}},
-      {"TELL", {100, 80}},     {"THANK-YOU", {100, 100}}};
+  // Known gaps, measured (the worse of the two rigs, rounded up by a few mm) and held to their
+  // own bounds so they cannot grow unnoticed; every other sign meets the human bounds above.
+  // STUDENT (98 mm step on the avatar, 66 mm change on the reference: the 180-degree turn from
+  // the fingertips on the forehead to the flat hand pointing forward in one 0.35 s replace).
+  // What fixed the others (BAD, DAY, DEAF, HOSPITAL, LEARN, MORNING came off this list with
+  // swivel continuity and the forearm-carried elbow contact; BOOK, 86 mm change on the avatar,
+  // with hands parted at a movement's goal; TELL and THANK-YOU, 78 mm elbow steps and 71/94 mm
+  // changes on the reference, with swivel fixes kept to one side from frame to frame, no swivel
+  // fix on a path for a gain under 1 mm, and turns ramped without a kink; LOOK, 61 mm on the
+  // avatar, with pushes ramped in a blended direction): CHANGELOG.md; docs/SYNTHESIS.md, known
+  // issues.
+  const std::map<std::string, Bound> known = {{"STUDENT", {100, 70}}};
   int signs = 0, smooth = 0;
   for (const testing::LexiconSign& sign : testing::lexicon_signs(text)) {
     const std::string& gloss = sign.gloss;
@@ -153,6 +152,11 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
     SynthesisResult r = synth.phrase(t.items, from_key_pose());
     ASSERT_TRUE(r.ok()) << gloss;
     Worst w = measure(rig_, r.clip);
+    // SIGNWEAVE_SMOOTHNESS_REPORT=1 prints every sign's figures (the per-frame clearing is
+    // sensitive: a change is judged on all signs of both rigs, not only the exempted ones).
+    if (std::getenv("SIGNWEAVE_SMOOTHNESS_REPORT"))
+      std::printf("smoothness %s %s %.1f %.1f (%s | %s)\n", GetParam(), gloss.c_str(), w.step_m * 1000.0f,
+                  w.change_m * 1000.0f, w.step_what.c_str(), w.change_what.c_str());
     auto k = known.find(gloss);
     expect_smooth(gloss, w, k == known.end() ? Bound{} : k->second);
     smooth += w.step_m <= kMaxStepM && w.change_m <= kMaxStepChangeM;
