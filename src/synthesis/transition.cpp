@@ -313,6 +313,45 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     if (p.max_penetration_m < best.max_penetration_m) best = std::move(p);
     return best.max_penetration_m <= 0.005f;
   };
+  // Forearms through each other (arms that cross on the way: LOVE's fists rising from the rest
+  // to cross at the chest): both arms pushed along their own escapes (one forward, the other
+  // back into the chest) made the outcome a lottery of the state count k (LOVE on the project
+  // avatar: 2-41 mm over speeds 0.7-1.5 and 25-60 fps). Signers bring the arm that ends in front
+  // in front all the way: one arm's wrist alone is held forward of the other by the depth plus
+  // a margin, the arm in front at the crossed end of the transition first (the end where the
+  // forearms are nearer each other), then the other.
+  {
+    float pair_depth = 0.0f;
+    PoseBuilder pb(rig);
+    for (int f = 0; f + 1 < plan.k; ++f) {
+      const std::uint8_t ex = plan.exempt[static_cast<size_t>(f)];
+      if ((ex & exempt_bit(kLeft, true)) || (ex & exempt_bit(kRight, true))) continue;
+      pb.set_from_local(&plan.frames[static_cast<size_t>(f) * J]);
+      pair_depth = std::max(pair_depth, arm_penetration(ctx.body, pb, kLeft, false, false, true).depth_m);
+    }
+    if (pair_depth > 0.005f) {
+      auto forearms = [&](const glm::quat* locals, float* gap_m) {
+        PoseBuilder p(rig);
+        p.set_from_local(locals);
+        const ArmRig &l = rig.arms[kLeft], &r = rig.arms[kRight];
+        *gap_m = segment_segment_distance(p.position(l.lower), p.position(l.hand), p.position(r.lower),
+                                          p.position(r.hand), nullptr, nullptr);
+        // Forward depth of each forearm's middle: which one is in front.
+        return glm::dot(p.position(l.lower) + p.position(l.hand) - p.position(r.lower) - p.position(r.hand),
+                        rig.forward);
+      };
+      float gap_from = 0.0f, gap_to = 0.0f;
+      const float left_ahead_from = forearms(from, &gap_from), left_ahead_to = forearms(to, &gap_to);
+      const Side front = (gap_to <= gap_from ? left_ahead_to : left_ahead_from) > 0.0f ? kLeft : kRight;
+      for (Side s : {front, other(front)})
+        for (float margin : {0.04f, 0.08f, 0.12f})
+          for (float tau : {via_tau, 0.5f, 0.35f, 0.65f}) {
+            std::array<glm::vec3, 2> fwd{};
+            fwd[s] = rig.forward * (pair_depth + margin);
+            if (consider(plan_with({make_via(fwd, tau)}))) return best;
+          }
+    }
+  }
   // The push, then two, three and four times it; failing those, less than it: a via-pose pushed
   // further can take another swivel that is worse (a hand across the waist: 5.2 mm at 1x, 15 mm
   // at 2x, 1.2 mm at 0.75x).
