@@ -49,6 +49,10 @@ bool is_touch(Contact c) {
 
 // How far the contact part stays from the place (m): touch 0, close 5 cm, none 7 cm — the
 // acceptance band for "no contact" is 3-10 cm.
+// The furthest a hand held off the far side's beside places is searched from the place (m):
+// inside the 3-10 cm band with a centimetre to spare for the contact part's reach error.
+constexpr float kFarBesideHeldOff_m = 0.09f;
+
 float contact_distance(Contact c, bool on_hand) {
   if (is_touch(c)) return 0.0f;
   if (c == Contact::Close) return on_hand ? 0.04f : 0.05f;
@@ -140,6 +144,14 @@ struct Solver {
     return hand_part(pb, side, place, finger).point - rig.bind_pos[rig.arms[side].hand];
   }
 
+  // A hand beside the FAR side of the body: the right hand at `left_beside`, the left at
+  // `right_beside` (as seen after a left-handed mirror).
+  static bool far_side_beside(const HandPlan& plan, const Location& loc) {
+    if (loc.kind != Location::Kind::Body) return false;
+    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
+    return seen == (plan.side == kRight ? notation::Side::LeftBeside : notation::Side::RightBeside);
+  }
+
   // Absolute target for a body / neutral-space location; false (with an error) if the avatar
   // lacks the anchor.
   bool body_target(const HandPlan& plan, const Location& loc, glm::vec3* target, PartPoint* anchor) {
@@ -170,8 +182,7 @@ struct Solver {
     // poses 2-3 mm deeper), at the neck a quarter (a half pushes the hand off the jaw, 10 cm from
     // the place; none lets the rest transitions cut through the chest, 126 mm), at the face not
     // at all (the forearm passes below the chin and a slant brings it into the head).
-    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
-    if (seen == (plan.side == kRight ? notation::Side::LeftBeside : notation::Side::RightBeside)) {
+    if (far_side_beside(plan, loc)) {
       const glm::vec3 across = plan.side == kRight ? rig.left : -rig.left;  // to the far side
       const float slant = static_cast<int>(loc.level) >= static_cast<int>(BodyLevel::Shoulders) ? 0.5f
                           : loc.level == BodyLevel::Neck                                       ? 0.25f
@@ -264,6 +275,42 @@ struct Solver {
           t.auto_swivel = true;
           best = solve_arm(rig, plan.side, t);
         }
+      }
+      // A hand held off the FAR side's beside place low down (the right hand beside the left
+      // hip): the arm reaches across the belly, and where the slanted place body_target holds
+      // it at still puts the arm in the trunk (the reference humanoid's upper arm 7-27 mm at the
+      // belly to below the waist, the project avatar's 57 mm below the waist, with the arm
+      // stretched), the place is searched round the anchor within the contact band: higher
+      // and further in front lets the elbow come forward and bend. The arm's depth decides
+      // (1 per mm), then the hand's orientation and reach, then staying near the written place.
+      else if (t.body && far_side_beside(plan, spec.location) && !is_touch(spec.location.contact) &&
+               best.trunk_depth_m > 0.005f) {
+        const glm::vec3 across = plan.side == kRight ? rig.left : -rig.left;
+        const glm::vec3 written = st.target;
+        // The hand too: a hand in the hip is pushed out per frame, and the arm follows it in.
+        PoseBuilder posed(rig);
+        auto cost = [&](const ArmPose& p, glm::vec3 target) {
+          posed.set_from_local(ctx.rest_locals.data());
+          apply_arm(rig, plan.side, p, &posed);
+          pose_fingers(rig, plan.side, st.angles, p.hand, &posed);
+          posed.finalize();
+          const float depth = std::max(p.trunk_depth_m, hand_penetration(ctx.body, posed, plan.side, true, false).depth_m);
+          return 1000.0f * std::max(0.0f, depth - 0.002f) + 3.0f * p.orientation_error_rad +
+                 20.0f * p.reach_error_m + 1.5f * glm::length(target - written);
+        };
+        float best_cost = cost(best, written);
+        for (float distance : {contact_distance(spec.location.contact, false), 0.08f, kFarBesideHeldOff_m})
+          for (float in : {0.0f, 0.5f, 1.0f, 1.5f, 2.0f, 3.0f})
+            for (float up : {-0.5f, 0.0f, 0.5f, 1.0f, 1.5f, 2.0f, 3.0f}) {
+              t.point = anchor.point + distance * glm::normalize(rig.forward - in * across + up * rig.up);
+              ArmPose p = solve_arm(rig, plan.side, t);
+              const float c = cost(p, t.point);
+              if (c < best_cost) {
+                best_cost = c;
+                best = p;
+                st.target = t.point;
+              }
+            }
       }
       // An orientation that puts the arm in the body gives way (arm_ik.h).
       t.point = st.target;

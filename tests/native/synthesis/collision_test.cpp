@@ -350,32 +350,39 @@ void crossing_arm_depths(const SynthContext& ctx, const SynthesisResult& r, Side
   }
 }
 
-// The dominant hand beside the FAR side of the body (`left_beside` from the forehead to the
-// belly; touch, close and no contact; a flat hand, fingers up, palm in): the arm reaches round
+// The dominant hand beside the FAR side of the body (`left_beside` from the forehead to below the
+// waist; touch, close and no contact; a flat hand, fingers up, palm in): the arm reaches round
 // the front of the chest (the place held off in front, the shoulder girdle protracted) instead
 // of through the torso. Before that, in the key poses, the upper arm was 22-83 mm in the torso
 // at the shoulders to the belly on the reference humanoid (8-24 mm at the face and neck) and
 // 13-22 mm on the project avatar, and the transitions from and back to rest cut through by
-// 95-131 mm (now each clip's worst frame is its key pose's). Bounds: 5 mm (the rule) except
-// where measured deeper, rounded up, per rig. Waist and below are known gaps (docs/SYNTHESIS.md).
+// 95-131 mm (now each clip's worst frame is its key pose's). From the belly down a hand held off
+// the place is searched round it within the contact band (sign_motion.cpp key_state): before,
+// the reference humanoid's belly 7.1 / 7.4 mm (close / none), waist 25.7 / 10.2 mm (its clip
+// 31.3 / 19.2), below the waist 26.6 / 17.5 mm; the project avatar's below the waist 56.6 /
+// 57.3 mm. Bounds: 5 mm (the rule) except where measured deeper, rounded up, per rig.
 TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
-  struct Bounds { float close_mm, none_mm; };  // key pose and clip; touch: 5 mm everywhere
+  struct Bounds { float touch_mm, close_mm, none_mm; };  // key pose and clip
   struct Rig_ {
     std::string name;
     avatar::Avatar avatar;
     std::map<BodyLevel, Bounds> known;
   };
   std::vector<Rig_> rigs;
-  // Reference humanoid, belly: 7.1 mm close, 7.4 mm none (the upper arm by the chest's lower
-  // corner; the elbow cannot come further forward with the hand that low and that far across).
-  rigs.push_back({"reference", make_reference_humanoid(), {{BodyLevel::Belly, {8.0f, 8.0f}}}});
+  // Reference humanoid, waist: 9.7 mm close and none (the upper arm by the chest's lower corner;
+  // no place within 10 cm of the anchor lets the elbow come further forward).
+  rigs.push_back({"reference", make_reference_humanoid(), {{BodyLevel::Waist, {5.0f, 10.0f, 10.0f}}}});
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar), {}});
+  // Project avatar below the waist: the place 28 cm out from the midline, the arm at full
+  // stretch across the hips; touch 8.0 mm (key pose) and 11.1 mm (its rest transitions), close
+  // and none 12.9 mm.
+  if (project.present)
+    rigs.push_back({"avatar", std::move(project.avatar), {{BodyLevel::BelowWaist, {11.5f, 13.0f, 13.0f}}}});
   const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,      BodyLevel::Mouth,
                               BodyLevel::Chin,     BodyLevel::Neck,      BodyLevel::Shoulders,
                               BodyLevel::ShoulderTop, BodyLevel::Chest,  BodyLevel::Stomach,
-                              BodyLevel::Belly};
+                              BodyLevel::Belly,    BodyLevel::Waist,     BodyLevel::BelowWaist};
   float worst_key = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
@@ -396,8 +403,8 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
         crossing_arm_depths(ctx, r, kRight, &key, &clip);
         float bound_mm = 5.0f;
         auto k = rg.known.find(level);
-        if (k != rg.known.end() && c != Contact::Touch)
-          bound_mm = c == Contact::Close ? k->second.close_mm : k->second.none_mm;
+        if (k != rg.known.end())
+          bound_mm = c == Contact::Touch ? k->second.touch_mm : c == Contact::Close ? k->second.close_mm : k->second.none_mm;
         EXPECT_LE(key * 1000.0f, bound_mm) << where << " (key pose)";
         EXPECT_LE(clip * 1000.0f, bound_mm) << where << " (whole clip)";
         worst_key = std::max(worst_key, key);
@@ -405,7 +412,10 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
         ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
         const float reach = r.report.contact_distances_m[0];
         if (c == Contact::Touch) {
-          EXPECT_LT(reach, 0.01f) << where;
+          // Known gap: the project avatar's touch beside the far side of the waist stops 14.5 mm
+          // short (the hand pushed out of the hip; docs/SYNTHESIS.md).
+          const bool short_touch = rg.name == "avatar" && level == BodyLevel::Waist;
+          EXPECT_LT(reach, short_touch ? 0.015f : 0.01f) << where;
         } else {
           EXPECT_GE(reach, 0.03f) << where;
           EXPECT_LE(reach, 0.10f) << where;
@@ -457,26 +467,27 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
   // (fingers to the left), 4 pointing up-left (the previous measurements' hands).
   // clip_mm: measured now, rounded up (before the chain, in brackets: arm depth in the clip; the
   // plan minimises the report's depth, hand included, which no case made worse).
+  // Since the held-off places from the belly down are searched round the anchor (key_state),
+  // the entries the search cleared are gone (reference flat/fist/pointing hands at the stomach,
+  // belly and waist, 8-32 mm before, now within their key pose + 0.5 mm); the entries with a
+  // key pose given are the search's, with the depth before it in brackets:
   const std::vector<Known> known = {
-      {{"reference", 0, BodyLevel::Waist, Contact::Close}, 32.0f},    // 31.3 (25.7; report 33.5 -> 31.6)
-      {{"reference", 0, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.2 (32.4)
-      {{"reference", 1, BodyLevel::Stomach, Contact::Close}, 8.5f},   // 7.9 (7.9)
-      {{"reference", 1, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.5 (15.2; report 31.1 both)
-      {{"reference", 1, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
-      {{"reference", 2, BodyLevel::Stomach, Contact::Close}, 8.5f},   // 8.0 (8.0)
-      {{"reference", 2, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.6 (16.1; report 28.8 both)
-      {{"reference", 2, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
-      {{"reference", 2, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.1 (36.9)
       {{"avatar", 0, BodyLevel::BelowWaist, Contact::Touch}, 12.0f},  // 11.1 (14.1)
+      {{"avatar", 1, BodyLevel::BelowWaist, Contact::Close}, 15.5f},  // 15.3, key 12.9 (56.6)
+      {{"avatar", 1, BodyLevel::BelowWaist, Contact::None}, 15.5f},   // 15.3, key 12.9 (57.3)
       // Across the body (fist fingers to the left, pointing hand up-left):
       {{"reference", 3, BodyLevel::Belly, Contact::Touch}, 30.0f},    // 29.4 (21.3; report 40.2 both)
-      {{"reference", 3, BodyLevel::Belly, Contact::Close}, 23.0f},    // 22.7 (30.5)
       {{"reference", 3, BodyLevel::Waist, Contact::Touch}, 37.5f},    // 37.0 (35.8; report 38.1 -> 37.0)
-      {{"reference", 4, BodyLevel::Stomach, Contact::Close}, 10.0f},  // 9.6 (9.6)
-      {{"reference", 4, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.6 (14.9; report 30.0 both)
+      {{"reference", 3, BodyLevel::Waist, Contact::Close}, 10.5f},    // 10.3, key 9.3 (14.5)
+      {{"reference", 3, BodyLevel::Waist, Contact::None}, 10.5f},     // 10.3, key 9.3 (16.6)
+      {{"reference", 4, BodyLevel::Waist, Contact::Close}, 10.0f},    // 9.6, key 4.0 (15.8)
+      {{"reference", 4, BodyLevel::Waist, Contact::None}, 10.0f},     // 9.6, key 4.0 (14.3)
       {{"avatar", 3, BodyLevel::Waist, Contact::Close}, 14.5f},       // 13.9 (13.9)
+      {{"avatar", 3, BodyLevel::BelowWaist, Contact::Close}, 15.0f},  // 14.8, key 10.9 (63.7)
+      {{"avatar", 3, BodyLevel::BelowWaist, Contact::None}, 15.0f},   // 14.8, key 10.9 (57.4)
       {{"avatar", 4, BodyLevel::BelowWaist, Contact::Touch}, 9.5f},   // 9.1 (13.7)
   };
+
   struct Rig_ { std::string name; avatar::Avatar avatar; };
   std::vector<Rig_> rigs;
   rigs.push_back({"reference", make_reference_humanoid()});
