@@ -273,9 +273,10 @@ TEST(SynthesisCollision, ArmInsideTheTorsoIsDetectedAndTheRestPoseIsClean) {
 
 // Hands at the places across the body (the non-dominant side), where the forearm crosses the
 // chest and the elbow could sink into the torso: the arm stays out of the trunk by 5 mm, with
-// touch and close contact, three hand configurations, on the reference humanoid and the
-// re-rigged variant (all places) and on the project's avatar (the places it passes; the rest are
-// known gaps in docs/SYNTHESIS.md). The `left_beside` places: HandBesideTheFarSide... below.
+// touch and close contact, three hand configurations, on the reference humanoid, the re-rigged
+// variant and the project's avatar (all places; the project avatar's known gaps, each held to
+// its measured depth rounded up, are in docs/SYNTHESIS.md). The `left_beside` places:
+// HandBesideTheFarSide... below.
 TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
   struct Place { BodyLevel level; Side side; };
   const std::vector<Place> all_places = {
@@ -285,17 +286,21 @@ TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
       {BodyLevel::Chest, Side::Left},     {BodyLevel::Stomach, Side::Left},
       {BodyLevel::Waist, Side::Left},
   };
-  const std::vector<Place> project_places = {
-      {BodyLevel::Cheeks, Side::Left}, {BodyLevel::Chin, Side::Left},
-      {BodyLevel::Chest, Side::Left},  {BodyLevel::Stomach, Side::Left},
-  };
-  struct Rig_ { avatar::Avatar avatar; const std::vector<Place>* places; };
+  // The project avatar, worst of the three hands and two contacts: the ears' forearm in the head
+  // 41.5 mm (the pointing hand held off; a fist touching 31 mm); the shoulder top 13.0 mm (a
+  // fist held off; 102-116 mm before its held-off direction was searched, sign_motion.cpp); the
+  // shoulders 8.5 mm (before the anchor fix and the routing: 96 mm); the neck 5.7 mm.
+  const std::map<BodyLevel, float> project_known_mm = {
+      {BodyLevel::Ears, 42.0f}, {BodyLevel::ShoulderTop, 13.5f}, {BodyLevel::Shoulders, 9.0f},
+      {BodyLevel::Neck, 6.0f}};
+  const std::map<BodyLevel, float> none;
+  struct Rig_ { avatar::Avatar avatar; const std::map<BodyLevel, float>* known; };
   std::vector<Rig_> rigs;
-  rigs.push_back({make_reference_humanoid(), &all_places});
-  rigs.push_back({make_rotated_variant(0.9f), &all_places});
+  rigs.push_back({make_reference_humanoid(), &none});
+  rigs.push_back({make_rotated_variant(0.9f), &none});
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({std::move(project.avatar), &project_places});
+  if (project.present) rigs.push_back({std::move(project.avatar), &project_known_mm});
   struct Hand { notation::HandShape shape; Direction finger, palm; };
   const Hand hands[] = {
       {flat(), {0, 1, 0}, {0, 0, -1}},   // flat, palm on the body
@@ -309,7 +314,7 @@ TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
     SynthContext ctx;
     std::string error;
     ASSERT_TRUE(make_context(rigs[v].avatar, SynthesisOptions{}, &ctx, &error)) << error;
-    for (const Place& pl : *rigs[v].places)
+    for (const Place& pl : all_places)
       for (Contact c : {Contact::Touch, Contact::Close})
         for (const Hand& h : hands) {
           notation::SignSpec s = sign_at(h.shape, pl.level, pl.side, c);
@@ -319,11 +324,23 @@ TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
           ASSERT_TRUE(r.ok()) << r.errors[0].message;
           std::string what;
           float d = worst_arm_depth(ctx, r, &what);
-          EXPECT_LE(d, 0.005f) << "avatar " << v << " level " << int(pl.level) << " side " << int(pl.side)
+          const auto k = rigs[v].known->find(pl.level);
+          const float bound_m = k == rigs[v].known->end() ? 0.005f : 0.001f * k->second;
+          EXPECT_LE(d, bound_m) << "avatar " << v << " level " << int(pl.level) << " side " << int(pl.side)
                                << " contact " << int(c) << ": " << what;
           // The synthesis report counts the arms too.
           EXPECT_GE(r.report.max_penetration_m + 1e-6f, d);
           worst = std::max(worst, d);
+          // Held off in whichever direction keeps the arm out, the hand is still 3-10 cm away.
+          // Known gap: on the project avatar the hand held off the far side of the neck is pushed
+          // out of the jaw to 10.8-11.3 cm (docs/SYNTHESIS.md).
+          if (c == Contact::Close) {
+            ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
+            const bool neck_gap = rigs[v].known == &project_known_mm && pl.level == BodyLevel::Neck;
+            EXPECT_GE(r.report.contact_distances_m[0], 0.03f) << "avatar " << v << " level " << int(pl.level);
+            EXPECT_LE(r.report.contact_distances_m[0], neck_gap ? 0.115f : 0.10f) << "avatar " << v << " level "
+                                                                                  << int(pl.level);
+          }
         }
   }
   RecordProperty("worst_arm_depth_mm", std::to_string(worst * 1000.0f));
