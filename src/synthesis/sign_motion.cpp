@@ -370,6 +370,75 @@ struct Solver {
   }
 };
 
+// A one-handed sign whose hand comes to rest in the other arm, which hangs at rest (the right
+// hand beside the far side of the belly, waist or hip, where the left arm hangs: up to 43 mm in
+// its forearm): the resting arm gives way, as a signer's does. It swings rigidly about its
+// shoulder joint — out to its side, forward or back — by the smallest of 0.1-0.5 rad that takes
+// the hand and forearm out of it (2 mm) without putting the resting arm into the trunk; the
+// model-space rotation, identity when nothing is in the way, is applied to that arm's joints
+// from the upper arm down in every frame of the sign (the transitions blend it in from the rest).
+glm::quat resting_arm_gives_way(Solver& solver, const std::array<HandPlan, 2>& plans,
+                                const std::array<HandState, 2>& key, int resting) {
+  const SynthContext& ctx = solver.ctx;
+  const Rig& rig = ctx.rig;
+  const glm::quat none(1, 0, 0, 0);
+  const int active = 1 - resting;
+  if (!ctx.options.avoid_collisions || plans[resting].active || !plans[active].active ||
+      plans[active].on_other_hand)
+    return none;
+  const Side act = plans[active].side, rest_side = plans[resting].side;
+  const ArmRig& ra = rig.arms[rest_side];
+  // Only a hand well over on the resting arm's side can be in it (most signs: no check at all).
+  const glm::vec3 outward = rest_side == kLeft ? rig.left : -rig.left;
+  const glm::vec3 mid = rig.bind_pos[rig.chest];
+  if (glm::dot(key[active].target - mid, outward) < 0.5f * glm::dot(rig.bind_pos[ra.upper] - mid, outward))
+    return none;
+  PoseBuilder rest(rig);
+  rest.set_from_local(ctx.rest_locals.data());
+  ArmTarget t;
+  t.point = key[active].target;
+  t.contact_offset = key[active].offset;
+  t.hand_delta = key[active].delta;
+  t.auto_swivel = false;
+  t.swivel_rad = key[active].swivel;
+  t.body = &ctx.body;
+  const ArmPose ap = solve_arm(rig, act, t);
+  // The chain of the resting arm from the upper arm down (its fingers included).
+  std::vector<int> chain;
+  for (int j = 0; j < rig.joint_count; ++j) {
+    int p = j;
+    while (p >= 0 && p != ra.upper) p = rig.parent[p];
+    if (p >= 0) chain.push_back(j);
+  }
+  PoseBuilder pb(rig);
+  auto depths = [&](const glm::quat& swing, float* in_other, float* rest_in_trunk) {
+    pb.set_from_local(ctx.rest_locals.data());
+    for (int j : chain) pb.set(j, swing * rest.delta(j));
+    apply_arm(rig, act, ap, &pb);
+    pose_fingers(rig, act, key[active].angles, ap.hand, &pb);
+    pb.finalize();
+    *in_other = std::max(hand_penetration(ctx.body, pb, act, false, true).depth_m,
+                         arm_penetration(ctx.body, pb, act, false, false, true).depth_m);
+    *rest_in_trunk = std::max(arm_penetration(ctx.body, pb, rest_side, true, false, false).depth_m,
+                              hand_penetration(ctx.body, pb, rest_side, true, false).depth_m);
+  };
+  float in_other = 0.0f, rest_trunk = 0.0f;
+  depths(none, &in_other, &rest_trunk);
+  if (in_other <= 0.005f) return none;
+  // Out to its side (about the forward axis), forward and back (about the sideways axis).
+  const glm::vec3 out_axis = rig.forward * (rest_side == kLeft ? 1.0f : -1.0f);
+  const glm::vec3 axes[5] = {out_axis, rig.left, -rig.left, glm::normalize(out_axis + rig.left),
+                             glm::normalize(out_axis - rig.left)};
+  for (float angle : {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.8f})
+    for (const glm::vec3& axis : axes) {
+      const glm::quat swing = axis_angle(axis, angle);
+      float d = 0.0f, trunk = 0.0f;
+      depths(swing, &d, &trunk);
+      if (d <= 0.002f && trunk <= std::max(rest_trunk, 0.002f)) return swing;
+    }
+  return none;
+}
+
 // Hands that cross at their key pose (LOVE's fists on the chest, DIFFERENT's index fingers,
 // BOOK's palms together) are written at the same place, so the two arms were solved through each
 // other (forearm through forearm by up to 74 mm). Signers lay one in front of the other: the
@@ -632,6 +701,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i].swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
   }
   separate_crossed_hands(solver, plans, &key);
+  std::array<glm::quat, 2> give_way = {resting_arm_gives_way(solver, plans, key, 0),
+                                       resting_arm_gives_way(solver, plans, key, 1)};
 
   // Segments: (step, reversed, return-to-start). Repetitions per seed/HamNoSys.
   struct Segment { int step; bool reversed; bool back_to_start; };
@@ -963,14 +1034,15 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       }
       const int pushes_before = out->pushes;
       PoseBuilder pb(rig);
-      // Inactive hands keep the rest pose.
+      // Inactive hands keep the rest pose (the arm swung out of the other hand's way, if it is
+      // in it: resting_arm_gives_way).
       for (int i = 0; i < 2; ++i) {
         if (plans[i].active) continue;
         const ArmRig& a = rig.arms[plans[i].side];
         for (int j = 0; j < J; ++j) {
           int p = j;
           while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
-          if (p >= 0) pb.set(j, rest.delta(j));
+          if (p >= 0) pb.set(j, p == a.upper ? give_way[i] * rest.delta(j) : rest.delta(j));
         }
       }
       pb.finalize();

@@ -601,5 +601,70 @@ TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
   }
 }
 
+// A one-handed sign with the hand beside the far side of the body (5 hands x the shoulders to
+// below the waist x touch, close, none; both rigs) puts the hand where the other arm hangs at
+// rest: the resting arm gives way (sign_motion.cpp, resting_arm_gives_way). Before, the hand was
+// in the other forearm by more than 5 mm in 48 of the 210 key poses, up to 43 mm (a flat hand
+// held off beside the waist: reference 26.3 / 38.4 mm close / none, the project avatar below the
+// waist 32.8 mm close). Now the flat hand held off is clear everywhere; what remains (mostly
+// touches: the swing is chosen against the key pose as solved, and the sign's frames put the
+// hand elsewhere in the arm, not yet understood) is held to its measure: 19 key poses, at most
+// 28.5 mm (docs/SYNTHESIS.md).
+TEST(SynthesisCollision, TheRestingArmGivesWayToAHandAtTheFarSide) {
+  struct Rig_ { std::string name; avatar::Avatar avatar; };
+  std::vector<Rig_> rigs;
+  rigs.push_back({"reference", make_reference_humanoid()});
+  ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  const notation::HandShape shapes[] = {flat(), fist(), index_point(), fist(), index_point()};
+  const Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+  const BodyLevel levels[] = {BodyLevel::Shoulders, BodyLevel::ShoulderTop, BodyLevel::Chest, BodyLevel::Stomach,
+                              BodyLevel::Belly,     BodyLevel::Waist,       BodyLevel::BelowWaist};
+  int over = 0;
+  float worst = 0.0f;
+  for (const Rig_& rg : rigs) {
+    Synthesizer synth(rg.avatar);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
+    for (int shape = 0; shape < 5; ++shape)
+      for (BodyLevel level : levels)
+        for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
+          notation::SignSpec s = sign_at(shapes[shape], level, Side::LeftBeside, c);
+          s.dominant.orientation.extended_finger = fingers[shape];
+          s.dominant.orientation.palm = {0, 0, -1};
+          SynthesisResult r = synth.sign(s, SynthesisOptions{});
+          ASSERT_TRUE(r.ok()) << r.errors[0].message;
+          float in_other = 0.0f;
+          PoseBuilder pb(ctx.rig);
+          for (const auto& sg : r.clip.segments) {
+            if (sg.kind != ClipSegment::Kind::Sign) continue;
+            const int f0 = static_cast<int>(std::lround(sg.start_s * r.clip.fps));
+            const int f1 = std::min(r.clip.frame_count - 1, static_cast<int>(std::lround(sg.end_s * r.clip.fps)));
+            for (int f = f0; f <= f1; ++f) {
+              pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * ctx.rig.joint_count]);
+              in_other = std::max(in_other, hand_penetration(ctx.body, pb, kRight, false, true).depth_m);
+            }
+          }
+          const std::string where = rg.name + " shape " + std::to_string(shape) + " level " +
+                                    std::to_string(static_cast<int>(level)) + " contact " +
+                                    std::to_string(static_cast<int>(c));
+          if (shape == 0 && c != Contact::Touch) {
+            EXPECT_LE(in_other * 1000.0f, 5.0f) << where;
+          }
+          EXPECT_LE(in_other * 1000.0f, 29.0f) << where;
+          if (in_other > 0.005f) ++over;
+          worst = std::max(worst, in_other);
+        }
+  }
+  if (rigs.size() == 2) {
+    EXPECT_LE(over, 19);
+  }
+  RecordProperty("hand_in_the_resting_arm_worst_mm", std::to_string(worst * 1000.0f));
+  RecordProperty("hand_in_the_resting_arm_over_5mm", std::to_string(over));
+}
+
 }  // namespace
 }  // namespace sw::synthesis
