@@ -50,6 +50,10 @@ bool is_touch(Contact c) {
 
 // How far the contact part stays from the place (m): touch 0, close 5 cm, none 7 cm — the
 // acceptance band for "no contact" is 3-10 cm.
+// The furthest a hand held off the far side's beside places is searched from the place (m):
+// inside the 3-10 cm band with a centimetre to spare for the contact part's reach error.
+constexpr float kFarBesideHeldOff_m = 0.09f;
+
 float contact_distance(Contact c, bool on_hand) {
   if (is_touch(c)) return 0.0f;
   if (c == Contact::Close) return on_hand ? 0.04f : 0.05f;
@@ -120,6 +124,21 @@ struct HandPlan {
   std::vector<std::vector<Movement>> steps;
 };
 
+// Poses `side`'s arm (the shoulder girdle down, fingers included) at rest in `pb`, as the frames
+// of a sign pose an inactive hand, with its arm from the upper arm down swung by `swing` (model
+// space, about the shoulder joint; resting_arm_gives_way). The joints left unset follow their
+// parents when finalized, as in the frames: a pose started from the whole rest pose instead
+// keeps rest rotations for the joints an arm solve does not set (the finger metacarpals and tips)
+// and puts the solved hand's fingers where they are not.
+void pose_arm_at_rest(const Rig& rig, const PoseBuilder& rest, Side side, const glm::quat& swing, PoseBuilder* pb) {
+  const ArmRig& a = rig.arms[side];
+  for (int j = 0; j < rig.joint_count; ++j) {
+    int p = j;
+    while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
+    if (p >= 0) pb->set(j, p == a.upper ? swing * rest.delta(j) : rest.delta(j));
+  }
+}
+
 struct Solver {
   const SynthContext& ctx;
   const Rig& rig;
@@ -139,6 +158,21 @@ struct Solver {
     pose_fingers(rig, side, angles, glm::quat(1, 0, 0, 0), &pb);
     pb.finalize();
     return hand_part(pb, side, place, finger).point - rig.bind_pos[rig.arms[side].hand];
+  }
+
+  // A hand beside the FAR side of the body: the right hand at `left_beside`, the left at
+  // `right_beside` (as seen after a left-handed mirror).
+  static bool far_side_beside(const HandPlan& plan, const Location& loc) {
+    if (loc.kind != Location::Kind::Body) return false;
+    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
+    return seen == (plan.side == kRight ? notation::Side::LeftBeside : notation::Side::RightBeside);
+  }
+
+  // A hand at the FAR side's own places (the right hand at `left`).
+  static bool far_side_place(const HandPlan& plan, const Location& loc) {
+    if (loc.kind != Location::Kind::Body) return false;
+    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
+    return seen == (plan.side == kRight ? notation::Side::Left : notation::Side::Right);
   }
 
   // Absolute target for a body / neutral-space location; false (with an error) if the avatar
@@ -171,8 +205,7 @@ struct Solver {
     // poses 2-3 mm deeper), at the neck a quarter (a half pushes the hand off the jaw, 10 cm from
     // the place; none lets the rest transitions cut through the chest, 126 mm), at the face not
     // at all (the forearm passes below the chin and a slant brings it into the head).
-    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
-    if (seen == (plan.side == kRight ? notation::Side::LeftBeside : notation::Side::RightBeside)) {
+    if (far_side_beside(plan, loc)) {
       const glm::vec3 across = plan.side == kRight ? rig.left : -rig.left;  // to the far side
       const float slant = static_cast<int>(loc.level) >= static_cast<int>(BodyLevel::Shoulders) ? 0.5f
                           : loc.level == BodyLevel::Neck                                       ? 0.25f
@@ -273,6 +306,90 @@ struct Solver {
           best = solve_arm(rig, plan.side, t);
         }
       }
+      // A hand held off the FAR side's beside place low down (the right hand beside the left
+      // hip): the arm reaches across the belly, and where the slanted place body_target holds
+      // it at still puts the arm in the trunk (the reference humanoid's upper arm 7-27 mm at the
+      // belly to below the waist, the project avatar's 57 mm below the waist, with the arm
+      // stretched), the place is searched round the anchor within the contact band: higher
+      // and further in front lets the elbow come forward and bend. The arm's depth decides
+      // (1 per mm), then the hand's orientation and reach, then staying near the written place.
+      else if (t.body && far_side_beside(plan, spec.location) && !is_touch(spec.location.contact) &&
+               best.trunk_depth_m > 0.005f) {
+        const glm::vec3 across = plan.side == kRight ? rig.left : -rig.left;
+        const glm::vec3 written = st.target;
+        // The hand too: a hand in the hip is pushed out per frame, and the arm follows it in.
+        PoseBuilder rest(rig);
+        rest.set_from_local(ctx.rest_locals.data());
+        auto cost = [&](const ArmPose& p, glm::vec3 target) {
+          PoseBuilder posed(rig);
+          pose_arm_at_rest(rig, rest, other(plan.side), glm::quat(1, 0, 0, 0), &posed);
+          apply_arm(rig, plan.side, p, &posed);
+          pose_fingers(rig, plan.side, st.angles, p.hand, &posed);
+          posed.finalize();
+          const float depth = std::max(p.trunk_depth_m, hand_penetration(ctx.body, posed, plan.side, true, false).depth_m);
+          return 1000.0f * std::max(0.0f, depth - 0.002f) + 3.0f * p.orientation_error_rad +
+                 20.0f * p.reach_error_m + 1.5f * glm::length(target - written);
+        };
+        float best_cost = cost(best, written);
+        for (float distance : {contact_distance(spec.location.contact, false), 0.08f, kFarBesideHeldOff_m})
+          for (float in : {0.0f, 0.5f, 1.0f, 1.5f, 2.0f, 3.0f})
+            for (float up : {-0.5f, 0.0f, 0.5f, 1.0f, 1.5f, 2.0f, 3.0f}) {
+              t.point = anchor.point + distance * glm::normalize(rig.forward - in * across + up * rig.up);
+              ArmPose p = solve_arm(rig, plan.side, t);
+              const float c = cost(p, t.point);
+              if (c < best_cost) {
+                best_cost = c;
+                best = p;
+                st.target = t.point;
+              }
+            }
+      }
+      // The same for a hand held off the far side's shoulder top (the right hand over the left
+      // shoulder): held straight up off the place the arm solved with the elbow up behind the
+      // head, and the transitions from the rest swung it there through the trunk (the project
+      // avatar: 102-116 mm). The direction the hand is held off in is searched at the written
+      // distance, scored by the posed arm's and hand's depth and by an elbow behind the
+      // shoulder. (Not at the ears: there it found 18 mm for 23 on the project avatar but took
+      // the reference humanoid's pointing hand from 2.5 to 21 mm.)
+      else if (t.body && far_side_place(plan, spec.location) && !is_touch(spec.location.contact) &&
+               spec.location.level == BodyLevel::ShoulderTop) {
+        const glm::vec3 written = st.target;
+        const ArmRig& arm = rig.arms[plan.side];
+        // Scored on the whole rest pose with the arm solved into it (the finger joints an arm
+        // solve leaves keep their rest rotations): posed as the sign's frames pose it instead,
+        // every candidate's arm measured 38-54 mm and the fist held off the far shoulder top
+        // went from 13 to 38 mm. Not yet understood; the figure is held by HandsAcrossTheBody.
+        PoseBuilder posed(rig);
+        auto cost = [&](const ArmPose& p, glm::vec3 target) {
+          posed.set_from_local(ctx.rest_locals.data());
+          apply_arm(rig, plan.side, p, &posed);
+          pose_fingers(rig, plan.side, st.angles, p.hand, &posed);
+          posed.finalize();
+          const float depth = std::max(arm_penetration(ctx.body, posed, plan.side, true, false, false).depth_m,
+                                       hand_penetration(ctx.body, posed, plan.side, true, false).depth_m);
+          const float behind = std::max(0.0f, -glm::dot(posed.position(arm.lower) - posed.position(arm.upper), rig.forward));
+          return 1000.0f * std::max(0.0f, depth - 0.002f) + 100.0f * behind + 3.0f * p.orientation_error_rad +
+                 20.0f * p.reach_error_m + 1.5f * glm::length(target - written);
+        };
+        float best_cost = cost(best, written);
+        const glm::vec3 n = glm::normalize(anchor.normal);
+        // (Held further off, up to 8 cm, cleared more, but the per-frame pushes then left some
+        // hands beyond the 10 cm band.)
+        const float distance = contact_distance(spec.location.contact, false);
+        for (float fwd : {0.0f, 0.5f, 1.0f, 2.0f, 4.0f})
+          for (float up : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f}) {
+            const glm::vec3 away = n + fwd * rig.forward + up * rig.up;
+            if (glm::length(away) < 0.3f) continue;  // back into the place (the shoulder top's normal is up)
+            t.point = anchor.point + distance * glm::normalize(away);
+            ArmPose p = solve_arm(rig, plan.side, t);
+            const float c = cost(p, t.point);
+            if (c < best_cost) {
+              best_cost = c;
+              best = p;
+              st.target = t.point;
+            }
+          }
+      }
       // An orientation that puts the arm in the body gives way (arm_ik.h).
       t.point = st.target;
       if (turn_hand_out_of_body(rig, plan.side, &t, &best)) st.delta = t.hand_delta;
@@ -281,6 +398,67 @@ struct Solver {
     return st;
   }
 };
+
+// A one-handed sign whose hand comes to rest in the other arm, which hangs at rest (the right
+// hand beside the far side of the belly, waist or hip, where the left arm hangs: up to 43 mm in
+// its forearm): the resting arm gives way, as a signer's does. It swings rigidly about its
+// shoulder joint — out to its side, forward or back — by the smallest of 0.1-0.5 rad that takes
+// the hand and forearm out of it (2 mm) without putting the resting arm into the trunk; the
+// model-space rotation, identity when nothing is in the way, is applied to that arm's joints
+// from the upper arm down in every frame of the sign (the transitions blend it in from the rest).
+glm::quat resting_arm_gives_way(Solver& solver, const std::array<HandPlan, 2>& plans,
+                                const std::array<HandState, 2>& key, int resting) {
+  const SynthContext& ctx = solver.ctx;
+  const Rig& rig = ctx.rig;
+  const glm::quat none(1, 0, 0, 0);
+  const int active = 1 - resting;
+  if (!ctx.options.avoid_collisions || plans[resting].active || !plans[active].active ||
+      plans[active].on_other_hand)
+    return none;
+  const Side act = plans[active].side, rest_side = plans[resting].side;
+  const ArmRig& ra = rig.arms[rest_side];
+  // Only a hand well over on the resting arm's side can be in it (most signs: no check at all).
+  const glm::vec3 outward = rest_side == kLeft ? rig.left : -rig.left;
+  const glm::vec3 mid = rig.bind_pos[rig.chest];
+  if (glm::dot(key[active].target - mid, outward) < 0.5f * glm::dot(rig.bind_pos[ra.upper] - mid, outward))
+    return none;
+  PoseBuilder rest(rig);
+  rest.set_from_local(ctx.rest_locals.data());
+  ArmTarget t;
+  t.point = key[active].target;
+  t.contact_offset = key[active].offset;
+  t.hand_delta = key[active].delta;
+  t.auto_swivel = false;
+  t.swivel_rad = key[active].swivel;
+  t.body = &ctx.body;
+  const ArmPose ap = solve_arm(rig, act, t);
+  auto depths = [&](const glm::quat& swing, float* in_other, float* rest_in_trunk) {
+    PoseBuilder pb(rig);
+    pose_arm_at_rest(rig, rest, rest_side, swing, &pb);
+    apply_arm(rig, act, ap, &pb);
+    pose_fingers(rig, act, key[active].angles, ap.hand, &pb);
+    pb.finalize();
+    *in_other = std::max(hand_penetration(ctx.body, pb, act, false, true).depth_m,
+                         arm_penetration(ctx.body, pb, act, false, false, true).depth_m);
+    *rest_in_trunk = std::max(arm_penetration(ctx.body, pb, rest_side, true, false, false).depth_m,
+                              hand_penetration(ctx.body, pb, rest_side, true, false).depth_m);
+  };
+  float in_other = 0.0f, rest_trunk = 0.0f;
+  depths(none, &in_other, &rest_trunk);
+  if (in_other <= 0.005f) return none;
+  // Out to its side (about the forward axis), forward and back (about the sideways axis).
+  const glm::vec3 out_axis = rig.forward * (rest_side == kLeft ? 1.0f : -1.0f);
+  const glm::vec3 axes[5] = {out_axis, rig.left, -rig.left, glm::normalize(out_axis + rig.left),
+                             glm::normalize(out_axis - rig.left)};
+  for (float angle : {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.8f})
+    for (const glm::vec3& axis : axes) {
+      const glm::quat swing = axis_angle(axis, angle);
+      float d = 0.0f, trunk = 0.0f;
+      depths(swing, &d, &trunk);
+      if (d <= 0.002f && trunk <= std::max(rest_trunk, 0.002f)) return swing;
+    }
+  return none;
+}
 
 // Hands that cross at their key pose (LOVE's fists on the chest, DIFFERENT's index fingers,
 // BOOK's palms together) are written at the same place, so the two arms were solved through each
@@ -552,6 +730,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i].swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
   }
   separate_crossed_hands(solver, plans, &key);
+  std::array<glm::quat, 2> give_way = {resting_arm_gives_way(solver, plans, key, 0),
+                                       resting_arm_gives_way(solver, plans, key, 1)};
 
   // Segments: (step, reversed, return-to-start). Repetitions per seed/HamNoSys.
   struct Segment { int step; bool reversed; bool back_to_start; };
@@ -912,16 +1092,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       const int pushes_before = out->pushes;
       const bool moving = f > 0 && !same_states(frames[f], frames[f - 1]);
       PoseBuilder pb(rig);
-      // Inactive hands keep the rest pose.
-      for (int i = 0; i < 2; ++i) {
-        if (plans[i].active) continue;
-        const ArmRig& a = rig.arms[plans[i].side];
-        for (int j = 0; j < J; ++j) {
-          int p = j;
-          while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
-          if (p >= 0) pb.set(j, rest.delta(j));
-        }
-      }
+      // Inactive hands keep the rest pose (the arm swung out of the other hand's way, if it is
+      // in it: resting_arm_gives_way).
+      for (int i = 0; i < 2; ++i)
+        if (!plans[i].active) pose_arm_at_rest(rig, rest, plans[i].side, give_way[i], &pb);
       pb.finalize();
       for (int oi = 0; oi < 2; ++oi) {
         int i = order[oi];
