@@ -6,6 +6,8 @@
 // other, by more than 5 mm outside intended contact.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -193,6 +195,75 @@ TEST(SynthesisLexicon, LovesCrossingForearmsStayClearAtAnySpeedAndFrameRate) {
                                              << d.trunk_what;
         worst = std::max({worst, d.forearms_m, d.trunk_m});
       }
+  }
+  RecordProperty("worst_arm_depth_mm", std::to_string(worst * 1000.0f));
+}
+
+
+// The whole lexicon at 25/30/60 fps x speed 0.8/1.0/1.25 on the reference humanoid and the project
+// avatar: no arm in the trunk or forearm through forearm beyond 5 mm outside intended contact.
+// The frame rate and speed change the transitions' state count k, so a path judged on its own
+// frames could be clear at one setting and not at another. Known gaps are held to their measured
+// worst over the nine settings (docs/SYNTHESIS.md, Known issues), per rig, so they cannot grow.
+// 141 signs x 9 settings x 2 rigs: about 2 500 phrases.
+TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
+  std::string text;
+  if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
+  const std::vector<testing::LexiconSign> signs = testing::lexicon_signs(text);
+  std::vector<std::pair<std::string, avatar::Avatar>> rigs;
+  rigs.push_back({"reference", make_reference_humanoid()});
+  testing::ProjectAvatar project = testing::load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  // Known gaps, the worst of the nine settings as measured (mm, rounded up to 0.1). Within the
+  // sign, the same at every setting: DAY (the right upper arm in the torso, the elbow on the back
+  // of the other hand). Within the sign, varying with the frames: MORNING (the left forearm in
+  // the torso, the left hand in the crook of the right elbow), HAPPY (the right forearm brushing
+  // the chest). In the arriving transition, forearm through forearm at some state counts: HAVE,
+  // SAD, DIFFERENT.
+  const std::map<std::string, float> known_mm = {
+      {"reference DAY", 9.6f},  {"reference MORNING", 7.1f}, {"reference HAVE", 10.5f}, {"reference HAPPY", 10.0f},
+      {"reference SAD", 7.3f},  {"reference DIFFERENT", 15.6f}, {"avatar HAVE", 5.6f},
+  };
+  float worst = 0.0f;
+  for (const auto& rg : rigs) {
+    Synthesizer synth(rg.second);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(rg.second, SynthesisOptions{}, &ctx, &error)) << error;
+    for (const testing::LexiconSign& sign : signs) {
+      ASSERT_TRUE(sign.text.ok()) << sign.gloss;
+      float sign_worst = 0.0f;
+      std::string what;
+      for (float fps : {25.0f, 30.0f, 60.0f})
+        for (float speed : {0.8f, 1.0f, 1.25f}) {
+          SynthesisOptions opt;
+          opt.fps = fps;
+          opt.speed = speed;
+          SynthesisResult r = synth.phrase(sign.text.items, opt);
+          ASSERT_TRUE(r.ok()) << sign.gloss << ": " << r.errors[0].message;
+          ArmDepths d = arm_depths(ctx, r);
+          const float depth = std::max(d.trunk_m, d.forearms_m);
+          if (depth > 0.005f && getenv("SW_SWEEP_PRINT")) {
+            std::string segs;
+            for (const auto& sg : r.clip.segments)
+              segs += std::to_string(static_cast<int>(sg.kind)) + "[" + std::to_string(static_cast<int>(sg.start_s * fps)) + "-" +
+                      std::to_string(static_cast<int>(sg.end_s * fps)) + "] ";
+            printf("SWEEP %s %s fps %.0f speed %.2f trunk %.1f forearms %.1f %s | %s || %s\n", rg.first.c_str(), sign.gloss.c_str(),
+                   fps, speed, d.trunk_m * 1000.0f, d.forearms_m * 1000.0f, d.trunk_what.c_str(), d.forearms_what.c_str(),
+                   segs.c_str());
+          }
+          if (depth > sign_worst) {
+            sign_worst = depth;
+            what = "fps " + std::to_string(static_cast<int>(fps)) + " speed " + std::to_string(speed) + ": " +
+                   (d.trunk_m >= d.forearms_m ? d.trunk_what : d.forearms_what);
+          }
+        }
+      auto k = known_mm.find(rg.first + " " + sign.gloss);
+      EXPECT_LE(sign_worst * 1000.0f, k == known_mm.end() ? 5.0f : k->second) << rg.first << " " << sign.gloss << " " << what;
+      if (k == known_mm.end()) worst = std::max(worst, sign_worst);
+    }
   }
   RecordProperty("worst_arm_depth_mm", std::to_string(worst * 1000.0f));
 }
