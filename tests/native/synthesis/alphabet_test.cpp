@@ -6,8 +6,6 @@
 // other, by more than 5 mm outside intended contact.
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -219,11 +217,15 @@ TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
   // sign, the same at every setting: DAY (the right upper arm in the torso, the elbow on the back
   // of the other hand). Within the sign, varying with the frames: MORNING (the left forearm in
   // the torso, the left hand in the crook of the right elbow), HAPPY (the right forearm brushing
-  // the chest). In the arriving transition, forearm through forearm at some state counts: HAVE,
-  // SAD, DIFFERENT.
+  // the chest), DIFFERENT (the crossed forearms at the start of the movement and the end of the
+  // arriving transition). SAD and HAVE (forearms through each other in the arriving transition
+  // at some state counts: 7.2/10.4 mm on the reference, 5.5 mm on the project avatar) are clear
+  // now that a route's excess over its end poses adds the kinds (transition.cpp).
   const std::map<std::string, float> known_mm = {
-      {"reference DAY", 9.6f},  {"reference MORNING", 7.1f}, {"reference HAVE", 10.5f}, {"reference HAPPY", 10.0f},
-      {"reference SAD", 7.3f},  {"reference DIFFERENT", 15.6f}, {"avatar HAVE", 5.6f},
+      {"reference DAY", 9.6f},
+      {"reference MORNING", 7.1f},
+      {"reference HAPPY", 10.0f},
+      {"reference DIFFERENT", 15.6f},
   };
   float worst = 0.0f;
   for (const auto& rg : rigs) {
@@ -245,15 +247,6 @@ TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
           ASSERT_TRUE(r.ok()) << sign.gloss << ": " << r.errors[0].message;
           ArmDepths d = arm_depths(ctx, r);
           const float depth = std::max(d.trunk_m, d.forearms_m);
-          if (depth > 0.005f && getenv("SW_SWEEP_PRINT")) {
-            std::string segs;
-            for (const auto& sg : r.clip.segments)
-              segs += std::to_string(static_cast<int>(sg.kind)) + "[" + std::to_string(static_cast<int>(sg.start_s * fps)) + "-" +
-                      std::to_string(static_cast<int>(sg.end_s * fps)) + "] ";
-            printf("SWEEP %s %s fps %.0f speed %.2f trunk %.1f forearms %.1f %s | %s || %s\n", rg.first.c_str(), sign.gloss.c_str(),
-                   fps, speed, d.trunk_m * 1000.0f, d.forearms_m * 1000.0f, d.trunk_what.c_str(), d.forearms_what.c_str(),
-                   segs.c_str());
-          }
           if (depth > sign_worst) {
             sign_worst = depth;
             what = "fps " + std::to_string(static_cast<int>(fps)) + " speed " + std::to_string(speed) + ": " +
