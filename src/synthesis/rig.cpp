@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -183,6 +185,19 @@ bool build_rig(const avatar::Avatar& avatar, Rig* rig, std::string* error) {
   return true;
 }
 
+namespace {
+
+// Bitwise equality of two quaternions. Not memcmp: em++ keeps that a libc call per joint, which
+// cost more than it saved; four integer compares inline everywhere.
+inline bool same_bits(const glm::quat& a, const glm::quat& b) {
+  std::uint32_t x[4], y[4];
+  std::memcpy(x, &a, sizeof x);
+  std::memcpy(y, &b, sizeof y);
+  return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | (x[2] ^ y[2]) | (x[3] ^ y[3])) == 0;
+}
+
+}  // namespace
+
 PoseBuilder::PoseBuilder(const Rig& r)
     : rig(&r), delta_(r.joint_count, glm::quat(1, 0, 0, 0)), is_set_(r.joint_count, 0),
       pos_(r.joint_count) {}
@@ -191,10 +206,12 @@ void PoseBuilder::set(int joint, const glm::quat& d) {
   if (joint < 0) return;
   delta_[joint] = d;
   is_set_[joint] = 1;
+  last_local_valid_ = false;
 }
 
 void PoseBuilder::finalize() {
   const Rig& r = *rig;
+  last_local_valid_ = false;
   for (int j = 0; j < r.joint_count; ++j) {
     int p = r.parent[j];
     if (p < 0) {
@@ -208,15 +225,29 @@ void PoseBuilder::finalize() {
 
 void PoseBuilder::set_from_local(const glm::quat* local) {
   const Rig& r = *rig;
+  const int n = r.joint_count;
   std::vector<glm::quat>& model = scratch_;
-  model.resize(r.joint_count);
-  for (int j = 0; j < r.joint_count; ++j) {
+  model.resize(n);
+  last_local_.resize(n);
+  recomputed_.resize(n);
+  const bool incremental = last_local_valid_;
+  for (int j = 0; j < n; ++j) {
     int p = r.parent[j];
+    // Same local rotation (bitwise: -0 vs +0 or NaNs count as changed) under an unchanged parent:
+    // model rotation, delta and position are what the previous call left.
+    if (incremental && (p < 0 || !recomputed_[p]) &&
+        same_bits(local[j], last_local_[j])) {
+      recomputed_[j] = 0;
+      continue;
+    }
+    recomputed_[j] = 1;
+    last_local_[j] = local[j];
     model[j] = p < 0 ? local[j] : model[p] * local[j];
     delta_[j] = glm::normalize(model[j] * glm::conjugate(r.bind_rot[j]));
     is_set_[j] = 1;
     pos_[j] = p < 0 ? r.bind_pos[j] : pos_[p] + delta_[p] * (r.bind_pos[j] - r.bind_pos[p]);
   }
+  last_local_valid_ = true;
 }
 
 glm::vec3 PoseBuilder::attached(int joint, const glm::vec3& bind_point) const {
