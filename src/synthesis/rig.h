@@ -82,6 +82,8 @@ struct PoseBuilder {
   void set_from_local(const glm::quat* local);
   const glm::quat& delta(int joint) const { return delta_[joint]; }
   const glm::vec3& position(int joint) const { return pos_[joint]; }
+  // Whether the last set_from_local recomputed `joint` (false: its pose is the previous frame's).
+  bool recomputed(int joint) const { return !last_local_valid_ || recomputed_[joint] != 0; }
   // Posed model-space point rigidly attached to `joint`, given in the bind pose.
   glm::vec3 attached(int joint, const glm::vec3& bind_point) const;
   glm::vec3 tip(Side side, int finger) const;

@@ -83,8 +83,59 @@ float via_weight(const std::vector<Via>& vias, size_t v, float tau) {
   return w * w;
 }
 
+// One joint's shortest-path slerp from a to b (slerp_shortest, rig.cpp) worked out once for every
+// sample of a path: the hemisphere flip, the angle and its sine do not depend on t, so they are
+// computed once instead of per sample (an acos and a sin per joint per frame). Each sample is the
+// same arithmetic on the same values as slerp_shortest(a, b, t): bit-identical.
+struct JointSlerp {
+  glm::quat a, b, diff;  // b flipped into a's hemisphere; diff = b - a for the nlerp branch
+  float theta = 0.0f, sin_theta = 0.0f;
+  bool nlerp = true;
+  // a and b the same bits (and finite): diff is +0, so a + t * diff is the same for every t >= 0
+  // (minimum_jerk never goes below 0) and one sample serves the whole path.
+  bool constant = false;
+  JointSlerp(const glm::quat& a_in, const glm::quat& b_in) : a(a_in), b(b_in) {
+    float d = glm::dot(a, b);
+    if (d < 0.0f) {
+      b = -b;
+      d = -d;
+    }
+    nlerp = d > 0.9995f;
+    if (nlerp) {
+      diff = b - a;
+      constant = std::memcmp(&a_in, &b_in, sizeof(glm::quat)) == 0 && std::isfinite(a.w) &&
+                 std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+    } else {
+      theta = std::acos(std::min(d, 1.0f));
+      sin_theta = std::sin(theta);
+    }
+  }
+  glm::quat at(float t) const {
+    if (nlerp) return glm::normalize(a + t * diff);
+    float wa = std::sin((1.0f - t) * theta) / sin_theta, wb = std::sin(t * theta) / sin_theta;
+    return glm::normalize(wa * a + wb * b);
+  }
+};
+
+// interpolate() without via-poses (the direct transition and its path measurement): the same
+// frames, each joint's slerp set up once for all of them (JointSlerp).
+void interpolate_direct(const glm::quat* a, const glm::quat* b, int joints, int k, std::vector<glm::quat>* out) {
+  out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
+  std::vector<JointSlerp> path;
+  path.reserve(static_cast<size_t>(joints));
+  for (int j = 0; j < joints; ++j) path.emplace_back(a[j], b[j]);
+  for (int i = 1; i < k; ++i) {
+    float e = minimum_jerk(static_cast<float>(i) / k);
+    glm::quat* row = &(*out)[static_cast<size_t>(i - 1) * joints];
+    const glm::quat* first = out->data();
+    for (int j = 0; j < joints; ++j)
+      row[j] = i > 1 && path[j].constant ? first[j] : glm::normalize(path[j].at(e));
+  }
+}
+
 void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>& vias, int joints, int k,
                  std::vector<glm::quat>* out) {
+  if (vias.empty()) return interpolate_direct(a, b, joints, k, out);
   out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
   std::vector<float> w(vias.size());
   for (int i = 1; i < k; ++i) {
@@ -153,16 +204,19 @@ float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sample
   std::vector<glm::quat> samples;
   sample(kPathSamples, &samples);
   PoseBuilder pb(rig);
-  std::vector<glm::vec3> prev(J), cur(J);
+  std::vector<glm::vec3> prev(J);
   std::vector<float> length(J, 0.0f);
   for (int i = 0; i <= kPathSamples; ++i) {
     const glm::quat* frame = i == 0 ? a : i == kPathSamples ? b : &samples[static_cast<size_t>(i - 1) * J];
     pb.set_from_local(frame);
     for (int j = 0; j < J; ++j) {
-      cur[j] = pb.position(j);
-      if (i > 0) length[j] += glm::length(cur[j] - prev[j]);
+      // A joint the incremental pose left alone has not moved: its chord is exactly 0 and adding
+      // it would leave the sum as it is.
+      if (i > 0 && !pb.recomputed(j)) continue;
+      const glm::vec3& cur = pb.position(j);
+      if (i > 0) length[j] += glm::length(cur - prev[j]);
+      prev[j] = cur;
     }
-    std::swap(prev, cur);
   }
   return J > 0 ? *std::max_element(length.begin(), length.end()) : 0.0f;
 }
