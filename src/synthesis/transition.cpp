@@ -30,6 +30,7 @@ float max_penetration(const SynthContext& ctx, const glm::quat* frames, int fram
   const Rig& rig = ctx.rig;
   float worst = 0.0f;
   PoseBuilder pb(rig);
+  PenetrationMemo* memo = ctx.penetration_memo;
   for (int f = 0; f < frame_count; ++f) {
     // A held frame repeats the one before (the holds of a sign, a pause): same pose, same
     // depths, and the first occurrence already counted. Posing a frame is most of the check.
@@ -37,28 +38,114 @@ float max_penetration(const SynthContext& ctx, const glm::quat* frames, int fram
     if (f > 0 && exempt[f] == exempt[f - 1] &&
         std::memcmp(frame, frame - rig.joint_count, sizeof(glm::quat) * rig.joint_count) == 0)
       continue;
-    pb.set_from_local(frame);
-    for (int s = 0; s < 2; ++s) {
-      Side side = static_cast<Side>(s);
-      bool trunk = !(exempt[f] & exempt_bit(side, false));
-      bool hands = !(exempt[f] & exempt_bit(side, true)) && !(exempt[f] & exempt_bit(other(side), true));
-      Penetration p = hand_penetration(ctx.body, pb, side, trunk, hands);
-      if (p.depth_m > worst) {
-        worst = p.depth_m;
-        if (what) *what = (side == kLeft ? "left hand in " : "right hand in ") + p.what;
-        if (worst_frame) *worst_frame = f;
+    // The frame's deepest check, first in the order below on a tie: over the frames, the first
+    // frame's deepest is then the first of all checks that reaches the maximum, as when every
+    // check is compared with the running worst.
+    const PenetrationMemo::Result* known = memo ? memo->find(frame, exempt[f]) : nullptr;
+    PenetrationMemo::Result here;
+    if (!known) {
+      pb.set_from_local(frame);
+      for (int s = 0; s < 2; ++s) {
+        Side side = static_cast<Side>(s);
+        bool trunk = !(exempt[f] & exempt_bit(side, false));
+        bool hands = !(exempt[f] & exempt_bit(side, true)) && !(exempt[f] & exempt_bit(other(side), true));
+        Penetration p = hand_penetration(ctx.body, pb, side, trunk, hands);
+        if (p.depth_m > here.depth_m) {
+          here.depth_m = p.depth_m;
+          here.what = (side == kLeft ? "left hand in " : "right hand in ") + p.what;
+        }
+        // The arm: always against the trunk (a hand's intended touch lets only the forearm's wrist
+        // end rest on the body), its forearm against the other one unless the hands touch.
+        Penetration arm = arm_penetration(ctx.body, pb, side, true, !trunk, hands && s == 0);
+        if (arm.depth_m > here.depth_m) {
+          here.depth_m = arm.depth_m;
+          here.what = std::move(arm.what);
+        }
       }
-      // The arm: always against the trunk (a hand's intended touch lets only the forearm's wrist
-      // end rest on the body), its forearm against the other one unless the hands touch.
-      Penetration arm = arm_penetration(ctx.body, pb, side, true, !trunk, hands && s == 0);
-      if (arm.depth_m > worst) {
-        worst = arm.depth_m;
-        if (what) *what = arm.what;
-        if (worst_frame) *worst_frame = f;
-      }
+      known = &here;
     }
+    if (known->depth_m > worst) {
+      worst = known->depth_m;
+      if (what) *what = known->what;
+      if (worst_frame) *worst_frame = f;
+    }
+    if (memo && known == &here) memo->add(frame, exempt[f], std::move(here));
   }
   return worst;
+}
+
+PenetrationMemo::PenetrationMemo(const SynthContext& ctx) : table_(1024, -1) {
+  const Rig& rig = ctx.rig;
+  std::vector<char> mark(static_cast<size_t>(rig.joint_count), 0);
+  auto reads = [&](int j) {
+    for (; j >= 0 && j < rig.joint_count && !mark[j]; j = rig.parent[j]) mark[j] = 1;
+  };
+  for (const ArmRig& a : rig.arms) {
+    for (int j : {a.shoulder, a.upper, a.lower, a.hand}) reads(j);
+    for (const FingerChain& c : a.fingers) {
+      for (int j : c.bones) reads(j);
+      reads(c.tip);
+    }
+  }
+  for (const Capsule& c : ctx.body.trunk) reads(c.joint);
+  for (int s = 0; s < 2; ++s) {
+    reads(ctx.body.upper_arm[s].joint);
+    reads(ctx.body.forearm[s].joint);
+  }
+  for (int j = 0; j < rig.joint_count; ++j)
+    if (mark[j]) joints_.push_back(j);
+}
+
+std::uint64_t PenetrationMemo::key_hash(const glm::quat* frame, std::uint8_t exempt) const {
+  std::uint64_t h = 1469598103934665603ull ^ exempt;  // FNV-1a over the key's 32-bit words
+  for (int j : joints_) {
+    std::uint32_t w[4];
+    std::memcpy(w, &frame[j], sizeof w);
+    for (std::uint32_t x : w) h = (h ^ x) * 1099511628211ull;
+  }
+  return h;
+}
+
+bool PenetrationMemo::same(size_t entry, const glm::quat* frame, std::uint8_t exempt) const {
+  if (exempt_[entry] != exempt) return false;
+  const glm::quat* key = &keys_[entry * joints_.size()];
+  for (size_t i = 0; i < joints_.size(); ++i)
+    if (std::memcmp(&key[i], &frame[joints_[i]], sizeof(glm::quat)) != 0) return false;
+  return true;
+}
+
+const PenetrationMemo::Result* PenetrationMemo::find(const glm::quat* frame, std::uint8_t exempt) const {
+  const std::uint64_t h = key_hash(frame, exempt);
+  const size_t mask = table_.size() - 1;
+  for (size_t i = static_cast<size_t>(h) & mask;; i = (i + 1) & mask) {
+    const std::int32_t e = table_[i];
+    if (e < 0) return nullptr;
+    if (hashes_[static_cast<size_t>(e)] == h && same(static_cast<size_t>(e), frame, exempt))
+      return &results_[static_cast<size_t>(e)];
+  }
+}
+
+void PenetrationMemo::add(const glm::quat* frame, std::uint8_t exempt, Result result) {
+  if (find(frame, exempt)) return;
+  if (2 * (results_.size() + 1) > table_.size()) {  // keep the table at most half full
+    std::vector<std::int32_t> bigger(2 * table_.size(), -1);
+    const size_t mask = bigger.size() - 1;
+    for (size_t e = 0; e < hashes_.size(); ++e) {
+      size_t i = static_cast<size_t>(hashes_[e]) & mask;
+      while (bigger[i] >= 0) i = (i + 1) & mask;
+      bigger[i] = static_cast<std::int32_t>(e);
+    }
+    table_.swap(bigger);
+  }
+  const std::uint64_t h = key_hash(frame, exempt);
+  const size_t mask = table_.size() - 1;
+  size_t i = static_cast<size_t>(h) & mask;
+  while (table_[i] >= 0) i = (i + 1) & mask;
+  table_[i] = static_cast<std::int32_t>(results_.size());
+  for (int j : joints_) keys_.push_back(frame[j]);
+  exempt_.push_back(exempt);
+  hashes_.push_back(h);
+  results_.push_back(std::move(result));
 }
 
 namespace {
