@@ -224,11 +224,18 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
   const WristFrame w = wrist_frame(rig, side);
   Solved best;
   best.pose.reach_error_m = 1e30f;
+  // A contact part on the forearm (the elbow, the forearm: DAY's elbow on the back of the other
+  // hand) moves with the forearm, not the hand: carried by the hand's rotation it rode on a
+  // forearm-long lever that the wrist's flexion and deviation swung (the wrist 12-19 cm in a
+  // frame as the wrist angles moved). Behind the wrist along the forearm axis (2 cm: the wrist's
+  // own places are within that) is on the forearm.
+  const bool on_forearm = glm::dot(t.contact_offset, w.e1) < -0.02f;
+  auto carried = [&](const ArmPose& p) { return (on_forearm ? p.lower : p.hand) * t.contact_offset; };
   auto consider = [&](const Chain& c, float tw, float rd, float fl) {
     ArmPose p;
     p.swivel_rad = swivel;
     compose(w, c, tw, rd, fl, &p);
-    p.reach_error_m = glm::length(c.wrist + p.hand * t.contact_offset - t.point);
+    p.reach_error_m = glm::length(c.wrist + carried(p) - t.point);
     p.orientation_error_rad = rotation_angle(glm::conjugate(t.hand_delta) * p.hand);
     if (p.reach_error_m < best.pose.reach_error_m - 1e-5f) best = Solved{p, c.wrist};
     return p;
@@ -239,7 +246,7 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
     Chain c = solve_chain(rig, side, wrist_target, swivel);
     solve_wrist(w, c.lower0, t.hand_delta, t.previous, t.max_wrist_step_rad, &tw, &rd, &fl);
     ArmPose p = consider(c, tw, rd, fl);
-    glm::vec3 next = t.point - p.hand * t.contact_offset;
+    glm::vec3 next = t.point - carried(p);
     float step = glm::length(next - wrist_target);
     wrist_target += (iter == 0 ? 1.0f : kDamping) * (next - wrist_target);
     if (step < 2e-4f) break;
@@ -248,7 +255,7 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
     tw = best.pose.twist_rad, rd = best.pose.wrist_dev_rad, fl = best.pose.wrist_flex_rad;
     wrist_target = best.wrist;
     for (int iter = 0; iter < kReachRounds && best.pose.reach_error_m > 5e-4f; ++iter) {
-      glm::vec3 achieved = best.wrist + best.pose.hand * t.contact_offset;
+      glm::vec3 achieved = best.wrist + carried(best.pose);
       wrist_target += t.point - achieved;
       Chain c = solve_chain(rig, side, wrist_target, swivel);
       consider(c, tw, rd, fl);
@@ -283,6 +290,18 @@ namespace {
 // The body cost decides among them when the elbow would enter the trunk.
 constexpr float kSwivelLo = -1.6f, kSwivelStep = 0.2f;
 constexpr int kSwivelCandidates = 19;
+// The cost of a swivel away from the neighbouring pose's (ArmTarget::near_swivel_rad), per
+// radian: a radian of elbow swing weighs as much as two thirds of a radian of orientation error,
+// so a pose keeps its neighbour's swivel unless another realises the hand clearly better or keeps
+// the arm out of the body (the body cost is steeper). Measured on the lexicon (both rigs): 1.0
+// left DEAF's elbow swinging between the ear and the mouth on the reference rig (26 cm change of
+// step), 3.0 held LEARN's hand at the forehead in the palm's basin (12 cm).
+constexpr float kSwivelContinuityPerRad = 2.0f;
+// The neighbouring swivel's basin is left (the whole range searched) when its best pose misses
+// the requested orientation by more than this (20 degrees, twice the orientation acceptance):
+// LEARN's pinched hand at the forehead kept the palm's swivel at 59 degrees off and the arm
+// solve broke away on the way (elbow 10 cm in a frame).
+constexpr float kNearBasinMaxOrientationErrorRad = 0.35f;
 // Signers keep the elbow beside the body, not behind it: an elbow swung behind the body (the
 // arm wrapped round the head to realise an orientation the wrist cannot) is shoulder extension
 // with horizontal abduction near its limit. Beyond 12 cm behind the shoulder joint (a hand held at
@@ -312,14 +331,16 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
   // Comfort heuristic: the elbow hangs down and a little out (25 deg), rising outwards for
   // targets above the shoulder; among candidates, the one that best realises the requested
   // orientation (wrist within limits), reaches and keeps the arm out of the trunk, close to that
-  // preference, wins.
+  // preference (and to the neighbouring pose's swivel, ArmTarget::near_swivel_rad), wins.
   const ArmRig& a = rig.arms[side];
   glm::vec3 v = t.point - rig.bind_pos[a.upper];
   float height = glm::dot(v, rig.up) / (a.upper_len_m + a.lower_len_m);
   float preferred = 0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f);
+  const float hi = kSwivelLo + kSwivelStep * static_cast<float>(kSwivelCandidates - 1);
   ArmPose best;
   float best_cost = 1e30f;
   auto consider = [&](float swivel) {
+    if (swivel < kSwivelLo - 1e-4f || swivel > hi + 1e-4f) return;
     ArmPose p = solve_at(rig, side, t, swivel).pose;
     p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
     // For a touch, reach beyond 5 mm is steep (300 per metre): with the trunk cost in play a
@@ -328,20 +349,31 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
     float steep = t.hand_contact ? 300.0f * std::max(0.0f, p.reach_error_m - 0.005f) : 0.0f;
     float cost = 3.0f * p.orientation_error_rad + 0.6f * std::fabs(swivel - preferred) +
                  20.0f * p.reach_error_m + steep + p.body_cost;
+    if (t.has_near_swivel) cost += kSwivelContinuityPerRad * std::fabs(swivel - t.near_swivel_rad);
     if (cost < best_cost) {
       best_cost = cost;
       best = p;
     }
   };
+  if (t.has_near_swivel) {
+    // The neighbouring pose's basin first: its swivel (on the candidate grid's range) and two
+    // steps either side. It is left only when none of them keeps the arm out of the body and a
+    // touch on its target (then the whole range below decides, the continuity cost still in).
+    const float near = clampf(t.near_swivel_rad, kSwivelLo, hi);
+    for (float d : {0.0f, -kSwivelStep, kSwivelStep, -2.0f * kSwivelStep, 2.0f * kSwivelStep}) consider(near + d);
+    const bool leave = best.body_cost > 0.03f || (t.hand_contact && best.reach_error_m > 0.005f) ||
+                       best.orientation_error_rad > kNearBasinMaxOrientationErrorRad;
+    if (!leave) {
+      const float centre = best.swivel_rad;
+      for (float d : {-0.5f * kSwivelStep, 0.5f * kSwivelStep}) consider(centre + d);
+      return best;
+    }
+  }
   // Coarse to fine (the per-sign time budget): every other candidate first, then the two
   // neighbours of the best one.
   for (int i = 0; i < kSwivelCandidates; i += 2) consider(kSwivelLo + kSwivelStep * static_cast<float>(i));
   const float coarse = best.swivel_rad;
-  for (float d : {-kSwivelStep, kSwivelStep}) {
-    float swivel = coarse + d;
-    if (swivel > kSwivelLo - 1e-4f && swivel < kSwivelLo + kSwivelStep * (kSwivelCandidates - 1) + 1e-4f)
-      consider(swivel);
-  }
+  for (float d : {-kSwivelStep, kSwivelStep}) consider(coarse + d);
   return best;
 }
 
@@ -371,6 +403,7 @@ bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pos
            (p.body_cost > 0.03f ? 1.0f : 0.0f);
   };
   ArmTarget turned = *t;
+  turned.has_near_swivel = false;
   ArmPose best = *pose;
   float best_score = score(*pose);
   glm::quat best_delta = t->hand_delta;

@@ -45,6 +45,15 @@ struct ArmTarget {
   // max_wrist_step_rad from the previous frame's (0: they hold).
   const ArmPose* previous = nullptr;
   float max_wrist_step_rad = 0.0f;
+  // Swivel continuity (auto_swivel only): the swivel this arm has at a neighbouring pose of the
+  // same motion (the sign's key pose before this one). Without it, two poses a few centimetres
+  // apart could choose swivels a radian apart at near-equal cost and the elbow swing between them
+  // (DEAF on the reference rig: 1.6 rad at the ear, 0.4 at the mouth, the elbow 13 cm in a frame). With it, every radian away from near_swivel_rad costs
+  // kSwivelContinuityPerRad (arm_ik.cpp) and the search starts in its basin: the candidates
+  // round it first, the whole range only when none of those keeps the arm out of the body or a
+  // touch on its target and the hand's orientation within 20 degrees.
+  bool has_near_swivel = false;
+  float near_swivel_rad = 0.0f;
 };
 
 struct ArmPose {

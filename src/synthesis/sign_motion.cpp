@@ -190,8 +190,11 @@ struct Solver {
     return p;
   }
 
+  // near_swivel: the swivel the hand has where this state is reached from (a movement's goal:
+  // the state before it), so the sign's key poses choose neighbouring swivels (arm_ik.h
+  // ArmTarget::near_swivel_rad); null for the sign's first key pose.
   HandState key_state(const HandPlan& plan, const notation::HandSpec& spec, bool* ok,
-                      PartPoint* anchor_out) {
+                      PartPoint* anchor_out, const float* near_swivel = nullptr) {
     HandState st;
     st.angles = solve_handshape(rig, plan.side, spec.shape);
     st.delta = hand_delta_for(rig, plan.side, orientation_frame(rig, spec.orientation, plan.side, plan.mirror_x));
@@ -215,6 +218,10 @@ struct Solver {
       // The swivel keeps the arm out of the body (unless collision handling is off).
       t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
       t.hand_contact = spec.location.kind == Location::Kind::Body && is_touch(spec.location.contact);
+      if (near_swivel) {
+        t.has_near_swivel = true;
+        t.near_swivel_rad = *near_swivel;
+      }
       ArmPose best = solve_arm(rig, plan.side, t);
       if (spec.location.kind == Location::Kind::NeutralSpace ||
           spec.location.level == BodyLevel::NeutralSpace) {
@@ -623,7 +630,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             }
             if (changed) {
               bool ok = true;
-              HandState g = solver.key_state(plans[i], spec, &ok, nullptr);
+              HandState g = solver.key_state(plans[i], spec, &ok, nullptr, &goal[i].swivel);
               if (!ok) return false;
               // A movement to a place on the other hand (GOOD: chin -> left palm) was not
               // followed: the hand stayed at the chin and only turned, about its fingertips,
@@ -646,6 +653,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
                 t.contact_offset = g.offset;
                 t.hand_delta = g.delta;
                 t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+                t.has_near_swivel = true;
+                t.near_swivel_rad = goal[i].swivel;
                 g.swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
               } else if (m.to_location && !to_other_hand && plans[i].on_other_hand && op.active) {
                 g.target -= other_hand_point(solver, plans[i], op, key[1 - i], plans[i].place,
@@ -674,6 +683,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
                 t.contact_offset = g.offset;
                 t.hand_delta = g.delta;
                 t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+                t.has_near_swivel = true;
+                t.near_swivel_rad = goal[i].swivel;
                 g.swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
               }
               goal[i].angles = g.angles;
@@ -901,11 +912,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           ArmPose ap = solve_arm(rig, plan.side, t);
           if (attempt == 0) {
             continued[f][i] = 0;
-            // Not for a contact part on the arm (DAY's elbow): it rides on the hand's contact
-            // offset, a forearm-long lever the wrist angles swing (a simplification of the
-            // solver), and continuing them there moved the wrist 38 cm in a frame.
-            const bool arm_contact = glm::dot(h.offset, rig.arms[plan.side].finger_dir) < -0.02f;
-            if (f > 0 && !arm_contact) {
+            // A contact part on the arm (DAY's elbow) continues like any other: it moves with
+            // the forearm (arm_ik.cpp solve_at), not on a lever the wrist angles swing.
+            if (f > 0) {
               const float step = wrist_change(ap, solved[f - 1][i]);
               const float turn_step = kWristTurnRadPerS * speed / fps;
               if (step > (continued[f - 1][i] ? turn_step : kWristFlipRadPerS * speed / fps)) {

@@ -2,6 +2,9 @@
 // takes the wrist beyond its limits, where the free solve flips the clamped wrist angles from
 // one limit to the other between two steps; continuing from the previous pose, no wrist angle
 // moves further than the allowed step and the contact point still reaches its target.
+// Swivel continuity (ArmTarget::near_swivel_rad): nearby targets solved in sequence, each near
+// the one before, get nearby swivels. A contact part on the forearm (the elbow) is placed by the
+// forearm, whatever the wrist does.
 #include "synthesis/arm_ik.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +12,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "synthesis/collision.h"
+#include "synthesis/hand_parts.h"
+#include "synthesis/orientation.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -57,6 +63,92 @@ TEST(SynthesisArmIk, ContinuedWristNeverFlipsAndStillReaches) {
   EXPECT_GT(free_worst, 1.0f);
   EXPECT_LE(continued_worst, max_step + 1e-4f);
   EXPECT_LT(worst_reach, 0.01f);
+}
+
+// DEAF on the reference humanoid: the index fingertip, finger up and palm in, goes from the cheek
+// by the ear to the corner of the mouth. Solved free, each pose picks its own swivel, and two
+// targets a centimetre apart can pick swivels a radian apart at near-equal cost (the free
+// choices are 1.6 rad at the ear and 0.4 at the mouth: the elbow swung 13 cm in a frame). Solved
+// in sequence, each near the swivel before it, the swivel moves at most a candidate step (0.2
+// rad) between neighbouring targets, and every touch the free solve reaches still reaches (< 1 cm).
+TEST(SynthesisArmIk, NearbyTargetsInSequenceGetNearbySwivels) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+  const BodyModel body = build_body_model(av, rig);
+  PoseBuilder bind(rig);
+  bind.finalize();
+  PartPoint ear, mouth;
+  ASSERT_TRUE(anchor_point(av, bind, "body/ears/right", &ear));
+  ASSERT_TRUE(anchor_point(av, bind, "body/mouth/right", &mouth));
+  const glm::vec3 offset = 0.18f * rig.arms[kRight].finger_dir;  // the index fingertip, about
+  notation::Orientation o;
+  o.extended_finger = {0, 1, 0};  // up
+  o.palm = {0, 0, -1};            // in, towards the signer
+  ArmTarget t;
+  t.contact_offset = offset;
+  t.hand_delta = hand_delta_for(rig, kRight, orientation_frame(rig, o, kRight, false));
+  t.body = &body;
+  t.hand_contact = true;
+  const int steps = 20;
+  float free_first = 0.0f, free_last = 0.0f, worst_step = 0.0f, worst_reach = 0.0f;
+  float near = 0.0f;
+  for (int k = 0; k <= steps; ++k) {
+    t.point = glm::mix(ear.point, mouth.point, static_cast<float>(k) / steps);
+    ArmTarget free_target = t;
+    const ArmPose free_pose = solve_arm(rig, kRight, free_target);
+    if (k == 0) free_first = free_pose.swivel_rad;
+    if (k == steps) free_last = free_pose.swivel_rad;
+    ArmTarget seq = t;
+    if (k > 0) {
+      seq.has_near_swivel = true;
+      seq.near_swivel_rad = near;
+    }
+    const ArmPose p = solve_arm(rig, kRight, seq);
+    if (k > 0) worst_step = std::max(worst_step, std::fabs(p.swivel_rad - near));
+    // Continuity never costs a touch: where the free solve reaches (the ear end is partly out of
+    // this rig's reach with this orientation, for every swivel), so does the sequence.
+    if (free_pose.reach_error_m < 0.01f) worst_reach = std::max(worst_reach, p.reach_error_m);
+    near = p.swivel_rad;
+  }
+  // The free choices at the two ends are far apart (the test would catch a jump between them).
+  EXPECT_GT(std::fabs(free_first - free_last), 0.6f);
+  EXPECT_LE(worst_step, 0.2f + 1e-4f);
+  EXPECT_LT(worst_reach, 0.01f);
+}
+
+// DAY: the elbow on the back of the other hand. The contact offset (elbow minus wrist in the bind
+// pose) was carried by the hand's rotation, so every wrist flexion or deviation swung the "elbow"
+// on a forearm-long lever while the real elbow went elsewhere (the wrist 12-19 cm in a frame). It
+// moves with the forearm now: whatever the hand's orientation, the arm's elbow joint is on the
+// target and the reported reach error is the real one.
+TEST(SynthesisArmIk, AContactOnTheForearmIsPlacedByTheForearm) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+  const ArmRig& a = rig.arms[kRight];
+  ArmTarget t;
+  // An elbow place the upper arm reaches (on its sphere about the shoulder joint, low enough that
+  // the clavicle stays still): down, forward and a little out.
+  t.point = rig.bind_pos[a.upper] +
+            a.upper_len_m * glm::normalize(-0.8f * rig.up + 0.5f * rig.forward - 0.2f * rig.left);
+  t.contact_offset = rig.bind_pos[a.lower] - rig.bind_pos[a.hand];  // the elbow, from the wrist
+  const glm::vec3 palm_side = glm::cross(a.finger_dir, a.palm_normal);
+  int flexed = 0;
+  for (float angle : {-0.9f, -0.5f, 0.0f, 0.5f, 0.9f}) {
+    for (const glm::vec3& axis : {a.palm_normal, palm_side}) {
+      t.hand_delta = axis_angle(axis, angle) * axis_angle(rig.up, 1.2f);
+      const ArmPose p = solve_arm(rig, kRight, t);
+      const ArmSegments seg = arm_segments(rig, kRight, p);
+      EXPECT_LT(glm::length(seg.elbow - t.point), 0.01f) << "hand turned " << angle << " rad";
+      EXPECT_NEAR(p.reach_error_m, glm::length(seg.elbow - t.point), 0.002f);
+      flexed += std::fabs(p.wrist_flex_rad) > 0.3f || std::fabs(p.wrist_dev_rad) > 0.2f;
+    }
+  }
+  // The wrist did bend (so a hand-carried offset would have swung).
+  EXPECT_GT(flexed, 0);
 }
 
 }  // namespace
