@@ -94,30 +94,39 @@ PenetrationMemo::PenetrationMemo(const SynthContext& ctx) : table_(1024, -1) {
   }
   for (int j = 0; j < rig.joint_count; ++j)
     if (mark[j]) joints_.push_back(j);
+  for (const ArmRig& a : rig.arms)
+    for (int j : {a.upper, a.lower, a.hand})
+      if (j >= 0 && j < rig.joint_count) hash_joints_.push_back(j);
 }
 
-std::uint64_t PenetrationMemo::key_hash(const glm::quat* frame, std::uint8_t exempt) const {
-  std::uint64_t h = 1469598103934665603ull ^ exempt;  // FNV-1a over the key's 32-bit words
-  for (int j : joints_) {
+std::uint32_t PenetrationMemo::key_hash(const glm::quat* frame, std::uint8_t exempt) const {
+  // FNV-1a over the arm joints' bits only: they move on every frame of a transition, so they tell
+  // frames apart; same() compares the whole key.
+  std::uint32_t h = 2166136261u ^ exempt;
+  for (int j : hash_joints_) {
     std::uint32_t w[4];
     std::memcpy(w, &frame[j], sizeof w);
-    for (std::uint32_t x : w) h = (h ^ x) * 1099511628211ull;
+    for (std::uint32_t x : w) h = (h ^ x) * 16777619u;
   }
   return h;
 }
 
 bool PenetrationMemo::same(size_t entry, const glm::quat* frame, std::uint8_t exempt) const {
   if (exempt_[entry] != exempt) return false;
-  const glm::quat* key = &keys_[entry * joints_.size()];
-  for (size_t i = 0; i < joints_.size(); ++i)
-    if (std::memcmp(&key[i], &frame[joints_[i]], sizeof(glm::quat)) != 0) return false;
-  return true;
+  const std::uint32_t* key = &keys_[entry * 4 * joints_.size()];
+  std::uint32_t differ = 0;
+  for (size_t i = 0; i < joints_.size(); ++i, key += 4) {
+    std::uint32_t w[4];
+    std::memcpy(w, &frame[joints_[i]], sizeof w);
+    differ |= (w[0] ^ key[0]) | (w[1] ^ key[1]) | (w[2] ^ key[2]) | (w[3] ^ key[3]);
+  }
+  return differ == 0;
 }
 
 const PenetrationMemo::Result* PenetrationMemo::find(const glm::quat* frame, std::uint8_t exempt) const {
-  const std::uint64_t h = key_hash(frame, exempt);
+  const std::uint32_t h = key_hash(frame, exempt);
   const size_t mask = table_.size() - 1;
-  for (size_t i = static_cast<size_t>(h) & mask;; i = (i + 1) & mask) {
+  for (size_t i = h & mask;; i = (i + 1) & mask) {
     const std::int32_t e = table_[i];
     if (e < 0) return nullptr;
     if (hashes_[static_cast<size_t>(e)] == h && same(static_cast<size_t>(e), frame, exempt))
@@ -126,23 +135,24 @@ const PenetrationMemo::Result* PenetrationMemo::find(const glm::quat* frame, std
 }
 
 void PenetrationMemo::add(const glm::quat* frame, std::uint8_t exempt, Result result) {
-  if (find(frame, exempt)) return;
   if (2 * (results_.size() + 1) > table_.size()) {  // keep the table at most half full
     std::vector<std::int32_t> bigger(2 * table_.size(), -1);
     const size_t mask = bigger.size() - 1;
     for (size_t e = 0; e < hashes_.size(); ++e) {
-      size_t i = static_cast<size_t>(hashes_[e]) & mask;
+      size_t i = hashes_[e] & mask;
       while (bigger[i] >= 0) i = (i + 1) & mask;
       bigger[i] = static_cast<std::int32_t>(e);
     }
     table_.swap(bigger);
   }
-  const std::uint64_t h = key_hash(frame, exempt);
+  const std::uint32_t h = key_hash(frame, exempt);
   const size_t mask = table_.size() - 1;
-  size_t i = static_cast<size_t>(h) & mask;
+  size_t i = h & mask;
   while (table_[i] >= 0) i = (i + 1) & mask;
   table_[i] = static_cast<std::int32_t>(results_.size());
-  for (int j : joints_) keys_.push_back(frame[j]);
+  const size_t at = keys_.size();
+  keys_.resize(at + 4 * joints_.size());
+  for (size_t k = 0; k < joints_.size(); ++k) std::memcpy(&keys_[at + 4 * k], &frame[joints_[k]], sizeof(glm::quat));
   exempt_.push_back(exempt);
   hashes_.push_back(h);
   results_.push_back(std::move(result));

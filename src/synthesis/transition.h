@@ -80,16 +80,18 @@ class PenetrationMemo {
     std::string what;
   };
   const Result* find(const glm::quat* frame, std::uint8_t exempt) const;
+  // A frame find() did not know.
   void add(const glm::quat* frame, std::uint8_t exempt, Result result);
 
  private:
-  std::uint64_t key_hash(const glm::quat* frame, std::uint8_t exempt) const;
+  std::uint32_t key_hash(const glm::quat* frame, std::uint8_t exempt) const;
   bool same(size_t entry, const glm::quat* frame, std::uint8_t exempt) const;
   std::vector<int> joints_;          // the key's joints
-  std::vector<glm::quat> keys_;      // joints_.size() per entry
+  std::vector<int> hash_joints_;     // the arms' upper, lower and hand joints
+  std::vector<std::uint32_t> keys_;  // the key joints' rotation bits, 4 words each, per entry
   std::vector<std::uint8_t> exempt_;
   std::vector<Result> results_;
-  std::vector<std::uint64_t> hashes_;
+  std::vector<std::uint32_t> hashes_;
   std::vector<std::int32_t> table_;  // open addressing: entry index or -1; size a power of two
 };
 
