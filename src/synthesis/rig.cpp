@@ -250,10 +250,6 @@ void PoseBuilder::set_from_local(const glm::quat* local) {
   last_local_valid_ = true;
 }
 
-glm::vec3 PoseBuilder::attached(int joint, const glm::vec3& bind_point) const {
-  return pos_[joint] + delta_[joint] * (bind_point - rig->bind_pos[joint]);
-}
-
 glm::vec3 PoseBuilder::tip(Side side, int finger) const {
   const FingerChain& c = rig->arms[side].fingers[finger];
   if (c.tip >= 0) return pos_[c.tip];

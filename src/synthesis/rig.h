@@ -84,8 +84,11 @@ struct PoseBuilder {
   const glm::vec3& position(int joint) const { return pos_[joint]; }
   // Whether the last set_from_local recomputed `joint` (false: its pose is the previous frame's).
   bool recomputed(int joint) const { return !last_local_valid_ || recomputed_[joint] != 0; }
-  // Posed model-space point rigidly attached to `joint`, given in the bind pose.
-  glm::vec3 attached(int joint, const glm::vec3& bind_point) const;
+  // Posed model-space point rigidly attached to `joint`, given in the bind pose. Inline: the
+  // collision checks call it a few thousand times per sign.
+  glm::vec3 attached(int joint, const glm::vec3& bind_point) const {
+    return pos_[joint] + delta_[joint] * (bind_point - rig->bind_pos[joint]);
+  }
   glm::vec3 tip(Side side, int finger) const;
   void local_rotations(glm::quat* out) const;  // rig.joint_count entries
 
