@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "math/quat_lanes.h"
 #include "skeleton/humanoid_names.h"
 
 namespace sw::synthesis {
@@ -187,51 +188,6 @@ bool build_rig(const avatar::Avatar& avatar, Rig* rig, std::string* error) {
 
 namespace {
 
-// Forward kinematics of one joint with GCC/Clang vector extensions (as skeleton/local_to_model.cpp):
-// g++ lowers them to SSE, em++ to WebAssembly SIMD or, in the scalar build, to scalar code. Each
-// lane does glm's own products and sums in glm's order (type_quat.inl operator*=, quaternion
-// normalize, quat * vec3 with cross), so the results are glm's to the bit; only the lanes run
-// side by side. glm stores a quaternion x, y, z, w.
-typedef float Float4 __attribute__((vector_size(16)));
-
-inline Float4 load4(const glm::quat& q) {
-  Float4 r;
-  std::memcpy(&r, &q, sizeof r);
-  return r;
-}
-inline Float4 load3(const glm::vec3& v) { return Float4{v.x, v.y, v.z, 0.0f}; }
-
-// p * q: lane x = ((pw qx + px qw) + py qz) - pz qy, and so on; lane w = ((pw qw - px qx) - py qy)
-// - pz qz, the subtractions as additions of the negated product (the same IEEE result).
-inline Float4 quat_mul(Float4 p, Float4 q) {
-  const Float4 minus_w{1.0f, 1.0f, 1.0f, -1.0f};
-  const Float4 t1 = __builtin_shufflevector(p, p, 3, 3, 3, 3) * q;
-  const Float4 t2 = __builtin_shufflevector(p, p, 0, 1, 2, 0) * __builtin_shufflevector(q, q, 3, 3, 3, 0) * minus_w;
-  const Float4 t3 = __builtin_shufflevector(p, p, 1, 2, 0, 1) * __builtin_shufflevector(q, q, 2, 0, 1, 1) * minus_w;
-  const Float4 t4 = __builtin_shufflevector(p, p, 2, 0, 1, 2) * __builtin_shufflevector(q, q, 1, 2, 0, 2);
-  return ((t1 + t2) + t3) - t4;
-}
-
-// glm::normalize(quat): length sqrt((w w + x x) + (y y + z z)), identity for a zero length.
-inline Float4 quat_normalize(Float4 q) {
-  const float len = std::sqrt((q[3] * q[3] + q[0] * q[0]) + (q[1] * q[1] + q[2] * q[2]));
-  if (len <= 0.0f) return Float4{0.0f, 0.0f, 0.0f, 1.0f};
-  const float inverse = 1.0f / len;
-  return q * inverse;
-}
-
-// glm::cross(a, b) in lanes x y z: (a.y b.z - b.y a.z, a.z b.x - b.z a.x, a.x b.y - b.x a.y).
-inline Float4 cross3(Float4 a, Float4 b) {
-  return __builtin_shufflevector(a, a, 1, 2, 0, 3) * __builtin_shufflevector(b, b, 2, 0, 1, 3) -
-         __builtin_shufflevector(b, b, 1, 2, 0, 3) * __builtin_shufflevector(a, a, 2, 0, 1, 3);
-}
-
-// glm's q * v: v + ((uv * w) + uuv) * 2 with uv = cross(q.xyz, v), uuv = cross(q.xyz, uv).
-inline Float4 quat_rotate(Float4 q, Float4 v) {
-  const Float4 uv = cross3(q, v), uuv = cross3(q, uv);
-  return v + ((uv * q[3]) + uuv) * 2.0f;
-}
-
 // Bitwise equality of two quaternions. Not memcmp: em++ keeps that a libc call per joint, which
 // cost more than it saved; four integer compares inline everywhere.
 inline bool same_bits(const glm::quat& a, const glm::quat& b) {
@@ -289,11 +245,12 @@ void PoseBuilder::set_from_local(const glm::quat* local) {
     last_local_[j] = local[j];
     // model = model[p] * local; delta = normalize(model * conjugate(bind)); pos = pos[p] +
     // delta[p] * (bind offset): glm's arithmetic, four lanes at a time (quat_mul above).
+    using namespace math::lanes;
     const Float4 m = p < 0 ? load4(local[j]) : quat_mul(load4(model[p]), load4(local[j]));
-    std::memcpy(&model[j], &m, sizeof m);
-    const Float4 conj_bind = load4(r.bind_rot[j]) * Float4{-1.0f, -1.0f, -1.0f, 1.0f};
+    store4(&model[j], m);
+    const Float4 conj_bind = quat_conjugate(load4(r.bind_rot[j]));
     const Float4 d = quat_normalize(quat_mul(m, conj_bind));
-    std::memcpy(&delta_[j], &d, sizeof d);
+    store4(&delta_[j], d);
     is_set_[j] = 1;
     if (p < 0) {
       pos_[j] = r.bind_pos[j];

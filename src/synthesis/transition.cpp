@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "math/quat_lanes.h"
 #include "synthesis/arm_ik.h"
 #include "synthesis/movement.h"
 
@@ -183,34 +184,39 @@ float via_weight(const std::vector<Via>& vias, size_t v, float tau) {
 // One joint's shortest-path slerp from a to b (slerp_shortest, rig.cpp) worked out once for every
 // sample of a path: the hemisphere flip, the angle and its sine do not depend on t, so they are
 // computed once instead of per sample (an acos and a sin per joint per frame). Each sample is the
-// same arithmetic on the same values as slerp_shortest(a, b, t): bit-identical.
+// same arithmetic on the same values as slerp_shortest(a, b, t), glm's quaternion sums and
+// normalisation done four lanes at a time (math/quat_lanes.h): bit-identical.
 struct JointSlerp {
-  glm::quat a, b, diff;  // b flipped into a's hemisphere; diff = b - a for the nlerp branch
+  math::lanes::Float4 a, b, diff;  // b flipped into a's hemisphere; diff = b - a for the nlerp branch
   float theta = 0.0f, sin_theta = 0.0f;
   bool nlerp = true;
   // a and b the same bits (and finite): diff is +0, so a + t * diff is the same for every t >= 0
   // (minimum_jerk never goes below 0) and one sample serves the whole path.
   bool constant = false;
-  JointSlerp(const glm::quat& a_in, const glm::quat& b_in) : a(a_in), b(b_in) {
-    float d = glm::dot(a, b);
+  JointSlerp(const glm::quat& a_in, const glm::quat& b_in) {
+    glm::quat bq = b_in;
+    float d = glm::dot(a_in, bq);
     if (d < 0.0f) {
-      b = -b;
+      bq = -bq;
       d = -d;
     }
+    a = math::lanes::load4(a_in);
+    b = math::lanes::load4(bq);
     nlerp = d > 0.9995f;
     if (nlerp) {
-      diff = b - a;
-      constant = std::memcmp(&a_in, &b_in, sizeof(glm::quat)) == 0 && std::isfinite(a.w) &&
-                 std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+      diff = math::lanes::load4(bq - a_in);
+      constant = std::memcmp(&a_in, &b_in, sizeof(glm::quat)) == 0 && std::isfinite(a_in.w) &&
+                 std::isfinite(a_in.x) && std::isfinite(a_in.y) && std::isfinite(a_in.z);
     } else {
       theta = std::acos(std::min(d, 1.0f));
       sin_theta = std::sin(theta);
     }
   }
-  glm::quat at(float t) const {
-    if (nlerp) return glm::normalize(a + t * diff);
+  // slerp_shortest's normalize(a + t * (b - a)) or normalize(wa * a + wb * b).
+  math::lanes::Float4 at(float t) const {
+    if (nlerp) return math::lanes::quat_normalize(a + diff * t);
     float wa = std::sin((1.0f - t) * theta) / sin_theta, wb = std::sin(t * theta) / sin_theta;
-    return glm::normalize(wa * a + wb * b);
+    return math::lanes::quat_normalize(a * wa + b * wb);
   }
 };
 
@@ -225,8 +231,10 @@ void interpolate_direct(const glm::quat* a, const glm::quat* b, int joints, int 
     float e = minimum_jerk(static_cast<float>(i) / k);
     glm::quat* row = &(*out)[static_cast<size_t>(i - 1) * joints];
     const glm::quat* first = out->data();
-    for (int j = 0; j < joints; ++j)
-      row[j] = i > 1 && path[j].constant ? first[j] : glm::normalize(path[j].at(e));
+    for (int j = 0; j < joints; ++j) {
+      if (i > 1 && path[j].constant) row[j] = first[j];
+      else math::lanes::store4(&row[j], math::lanes::quat_normalize(path[j].at(e)));
+    }
   }
 }
 
