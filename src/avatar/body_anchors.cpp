@@ -23,6 +23,10 @@ constexpr std::array<const char*, 5> kSides = {"right_beside", "right", "centre"
 constexpr std::array<const char*, 7> kHandPlaces = {"palm", "back", "thumb_side", "little_side", "wrist", "wrist_back", "thumb_ball"};
 constexpr std::array<const char*, 6> kFingerPlaces = {"tip", "pad", "nail", "base", "middle_joint", "side"};
 constexpr std::array<const char*, 5> kFingerNames = {"thumb", "index", "middle", "ring", "little"};
+// How far a `*_beside` place stays at least beyond the body's silhouette at its height: a hand
+// held there (half a hand's thickness, ~1.5 cm, on either side of the place) stays off the skin
+// by more than a centimetre.
+constexpr float kBesideClear_m = 0.03f;
 constexpr std::array<const char*, 5> kArmPlaces = {"forearm", "forearm_back", "elbow", "upper_arm", "elbow_inside"};
 
 // Which body part a triangle belongs to, so a ray from inside the head cannot stop on a hand.
@@ -117,6 +121,27 @@ class Surface {
     return Hit{origin + dir * best, n, best};
   }
 
+  // How far the skin of `regions` reaches along `side` (from `origin`) in the plane through
+  // `origin` across `up`: the farthest point where a triangle's edge crosses that plane (the
+  // body's silhouette seen from the front, at one height). -infinity when nothing crosses.
+  float slice_reach(glm::vec3 origin, glm::vec3 up, glm::vec3 side, unsigned regions) const {
+    float reach = -std::numeric_limits<float>::infinity();
+    for (const Chunk& chunk : chunks_) {
+      if (!(chunk.regions & regions) || !chunk.straddles(origin, up)) continue;
+      for (std::size_t t = chunk.first; t < chunk.end; ++t) {
+        if (!(region_[t] & regions)) continue;
+        for (std::size_t e = 0; e < 3; ++e) {
+          const glm::vec3& p = mesh_.positions[mesh_.indices[3 * t + e]];
+          const glm::vec3& q = mesh_.positions[mesh_.indices[3 * t + (e + 1) % 3]];
+          const float hp = glm::dot(p - origin, up), hq = glm::dot(q - origin, up);
+          if (hp * hq > 0.0f || hp == hq) continue;
+          reach = std::max(reach, glm::dot(p + (q - p) * (hp / (hp - hq)) - origin, side));
+        }
+      }
+    }
+    return reach;
+  }
+
  private:
   // 64 triangles a run: small enough that a run's box hugs one part of the body, large enough
   // that the boxes (a few hundred) cost little next to the triangles they skip.
@@ -129,6 +154,20 @@ class Surface {
     std::size_t first = 0, end = 0;
     unsigned regions = 0;
     glm::vec3 lo{0.0f}, hi{0.0f};
+
+    // Whether the box (grown by kMargin_m) has corners on both sides of the plane through
+    // `origin` across `up`.
+    bool straddles(glm::vec3 origin, glm::vec3 up) const {
+      float below = std::numeric_limits<float>::max(), above = std::numeric_limits<float>::lowest();
+      for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? hi.x + kMargin_m : lo.x - kMargin_m, (c & 2) ? hi.y + kMargin_m : lo.y - kMargin_m,
+                               (c & 4) ? hi.z + kMargin_m : lo.z - kMargin_m);
+        const float h = glm::dot(corner - origin, up);
+        below = std::min(below, h);
+        above = std::max(above, h);
+      }
+      return below <= 0.0f && above >= 0.0f;
+    }
 
     // Slab test of the ray against the box grown by kMargin_m, up to the nearest hit so far.
     bool may_hit(glm::vec3 origin, glm::vec3 dir, float max_distance) const {
@@ -310,8 +349,12 @@ class AnchorBuilder {
   void level(const std::string& name, float h, int j, int j_left, int j_right, float inset_m = 0.0f,
              unsigned regions = kCore) {
     const glm::vec3 o = axis(h);
-    const float wl = half_width(h, 1.0f, regions, 0.08f);
-    const float wr = half_width(h, -1.0f, regions, 0.08f);
+    const auto reach = [&](int id) {
+      const glm::vec3 d = position(id) - o;
+      return glm::length(d - up_ * glm::dot(d, up_));
+    };
+    const float wl = half_width(h, 1.0f, regions, name == "shoulders" ? reach(skeleton::kLeftUpperArm) : 0.08f);
+    const float wr = half_width(h, -1.0f, regions, name == "shoulders" ? reach(skeleton::kRightUpperArm) : 0.08f);
     const Hit centre = surface("body/" + name + "/centre", o, forward_, regions, 0.08f);
     const std::string base = "body/" + name + "/";
     Hit left, right;
@@ -324,10 +367,6 @@ class AnchorBuilder {
     } else if (name == "shoulders") {
       // The front of each shoulder: three quarters of the way out to the upper-arm joint, where
       // the deltoid (often weighted to the arm) begins.
-      const auto reach = [&](int id) {
-        const glm::vec3 d = position(id) - o;
-        return glm::length(d - up_ * glm::dot(d, up_));
-      };
       const unsigned with_arms = regions | kLeftArm | kRightArm;
       left = surface(base + "left", o + left_ * (0.75f * reach(skeleton::kLeftUpperArm)), forward_, with_arms, centre.distance);
       right = surface(base + "right", o - left_ * (0.75f * reach(skeleton::kRightUpperArm)), forward_, with_arms, centre.distance);
@@ -337,11 +376,23 @@ class AnchorBuilder {
     }
     // Teeth and tongue sit behind the lips: the lip points moved inward along the normal.
     const auto inside = [&](Hit hit) { hit.point -= forward_ * inset_m; return hit; };
-    add(base + "right_beside", j_right, o - left_ * (1.6f * wr) + forward_ * (0.5f * centre.distance), forward_);
+    // Beside: 1.6 half-widths out, and at least kBesideClear_m beyond the body's silhouette at
+    // this height (the skin of the trunk, head and legs, arms left out). At the shoulder joints'
+    // height the sideways ray runs along a T-posed arm and finds no skin: the half width was
+    // then the 8 cm fallback and `shoulders/*_beside` 12.8 cm out, in front of the shoulder
+    // (which reaches 23 cm on the project avatar); there the half width is the upper-arm
+    // joint's reach instead. Where the shoulders' slope is still beside a neck level, the
+    // silhouette keeps the place off it.
+    const auto beside = [&](float sign, float w) {
+      const float silhouette = surface_.slice_reach(o, up_, left_ * sign, regions | kCore);
+      return std::max(1.6f * w, silhouette + kBesideClear_m);
+    };
+    const float bl = beside(1.0f, wl), br = beside(-1.0f, wr);
+    add(base + "right_beside", j_right, o - left_ * br + forward_ * (0.5f * centre.distance), forward_);
     add(base + "right", j_right, inside(right).point, right.normal);
     add(base + "centre", j, inside(centre).point, centre.normal);
     add(base + "left", j_left, inside(left).point, left.normal);
-    add(base + "left_beside", j_left, o + left_ * (1.6f * wl) + forward_ * (0.5f * centre.distance), forward_);
+    add(base + "left_beside", j_left, o + left_ * bl + forward_ * (0.5f * centre.distance), forward_);
   }
 
   void body_levels() {

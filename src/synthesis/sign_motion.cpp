@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "synthesis/arm_ik.h"
+#include "synthesis/frame_corrections.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/movement.h"
 #include "synthesis/orientation.h"
@@ -49,6 +50,10 @@ bool is_touch(Contact c) {
 
 // How far the contact part stays from the place (m): touch 0, close 5 cm, none 7 cm — the
 // acceptance band for "no contact" is 3-10 cm.
+// The furthest a hand held off the far side's beside places is searched from the place (m):
+// inside the 3-10 cm band with a centimetre to spare for the contact part's reach error.
+constexpr float kFarBesideHeldOff_m = 0.09f;
+
 float contact_distance(Contact c, bool on_hand) {
   if (is_touch(c)) return 0.0f;
   if (c == Contact::Close) return on_hand ? 0.04f : 0.05f;
@@ -119,6 +124,21 @@ struct HandPlan {
   std::vector<std::vector<Movement>> steps;
 };
 
+// Poses `side`'s arm (the shoulder girdle down, fingers included) at rest in `pb`, as the frames
+// of a sign pose an inactive hand, with its arm from the upper arm down swung by `swing` (model
+// space, about the shoulder joint; resting_arm_gives_way). The joints left unset follow their
+// parents when finalized, as in the frames: a pose started from the whole rest pose instead
+// keeps rest rotations for the joints an arm solve does not set (the finger metacarpals and tips)
+// and puts the solved hand's fingers where they are not.
+void pose_arm_at_rest(const Rig& rig, const PoseBuilder& rest, Side side, const glm::quat& swing, PoseBuilder* pb) {
+  const ArmRig& a = rig.arms[side];
+  for (int j = 0; j < rig.joint_count; ++j) {
+    int p = j;
+    while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
+    if (p >= 0) pb->set(j, p == a.upper ? swing * rest.delta(j) : rest.delta(j));
+  }
+}
+
 struct Solver {
   const SynthContext& ctx;
   const Rig& rig;
@@ -138,6 +158,21 @@ struct Solver {
     pose_fingers(rig, side, angles, glm::quat(1, 0, 0, 0), &pb);
     pb.finalize();
     return hand_part(pb, side, place, finger).point - rig.bind_pos[rig.arms[side].hand];
+  }
+
+  // A hand beside the FAR side of the body: the right hand at `left_beside`, the left at
+  // `right_beside` (as seen after a left-handed mirror).
+  static bool far_side_beside(const HandPlan& plan, const Location& loc) {
+    if (loc.kind != Location::Kind::Body) return false;
+    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
+    return seen == (plan.side == kRight ? notation::Side::LeftBeside : notation::Side::RightBeside);
+  }
+
+  // A hand at the FAR side's own places (the right hand at `left`).
+  static bool far_side_place(const HandPlan& plan, const Location& loc) {
+    if (loc.kind != Location::Kind::Body) return false;
+    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
+    return seen == (plan.side == kRight ? notation::Side::Left : notation::Side::Right);
   }
 
   // Absolute target for a body / neutral-space location; false (with an error) if the avatar
@@ -170,8 +205,7 @@ struct Solver {
     // poses 2-3 mm deeper), at the neck a quarter (a half pushes the hand off the jaw, 10 cm from
     // the place; none lets the rest transitions cut through the chest, 126 mm), at the face not
     // at all (the forearm passes below the chin and a slant brings it into the head).
-    const notation::Side seen = plan.mirror_x ? mirror_side(loc.side) : loc.side;
-    if (seen == (plan.side == kRight ? notation::Side::LeftBeside : notation::Side::RightBeside)) {
+    if (far_side_beside(plan, loc)) {
       const glm::vec3 across = plan.side == kRight ? rig.left : -rig.left;  // to the far side
       const float slant = static_cast<int>(loc.level) >= static_cast<int>(BodyLevel::Shoulders) ? 0.5f
                           : loc.level == BodyLevel::Neck                                       ? 0.25f
@@ -272,6 +306,90 @@ struct Solver {
           best = solve_arm(rig, plan.side, t);
         }
       }
+      // A hand held off the FAR side's beside place low down (the right hand beside the left
+      // hip): the arm reaches across the belly, and where the slanted place body_target holds
+      // it at still puts the arm in the trunk (the reference humanoid's upper arm 7-27 mm at the
+      // belly to below the waist, the project avatar's 57 mm below the waist, with the arm
+      // stretched), the place is searched round the anchor within the contact band: higher
+      // and further in front lets the elbow come forward and bend. The arm's depth decides
+      // (1 per mm), then the hand's orientation and reach, then staying near the written place.
+      else if (t.body && far_side_beside(plan, spec.location) && !is_touch(spec.location.contact) &&
+               best.trunk_depth_m > 0.005f) {
+        const glm::vec3 across = plan.side == kRight ? rig.left : -rig.left;
+        const glm::vec3 written = st.target;
+        // The hand too: a hand in the hip is pushed out per frame, and the arm follows it in.
+        PoseBuilder rest(rig);
+        rest.set_from_local(ctx.rest_locals.data());
+        auto cost = [&](const ArmPose& p, glm::vec3 target) {
+          PoseBuilder posed(rig);
+          pose_arm_at_rest(rig, rest, other(plan.side), glm::quat(1, 0, 0, 0), &posed);
+          apply_arm(rig, plan.side, p, &posed);
+          pose_fingers(rig, plan.side, st.angles, p.hand, &posed);
+          posed.finalize();
+          const float depth = std::max(p.trunk_depth_m, hand_penetration(ctx.body, posed, plan.side, true, false).depth_m);
+          return 1000.0f * std::max(0.0f, depth - 0.002f) + 3.0f * p.orientation_error_rad +
+                 20.0f * p.reach_error_m + 1.5f * glm::length(target - written);
+        };
+        float best_cost = cost(best, written);
+        for (float distance : {contact_distance(spec.location.contact, false), 0.08f, kFarBesideHeldOff_m})
+          for (float in : {0.0f, 0.5f, 1.0f, 1.5f, 2.0f, 3.0f})
+            for (float up : {-0.5f, 0.0f, 0.5f, 1.0f, 1.5f, 2.0f, 3.0f}) {
+              t.point = anchor.point + distance * glm::normalize(rig.forward - in * across + up * rig.up);
+              ArmPose p = solve_arm(rig, plan.side, t);
+              const float c = cost(p, t.point);
+              if (c < best_cost) {
+                best_cost = c;
+                best = p;
+                st.target = t.point;
+              }
+            }
+      }
+      // The same for a hand held off the far side's shoulder top (the right hand over the left
+      // shoulder): held straight up off the place the arm solved with the elbow up behind the
+      // head, and the transitions from the rest swung it there through the trunk (the project
+      // avatar: 102-116 mm). The direction the hand is held off in is searched at the written
+      // distance, scored by the posed arm's and hand's depth and by an elbow behind the
+      // shoulder. (Not at the ears: there it found 18 mm for 23 on the project avatar but took
+      // the reference humanoid's pointing hand from 2.5 to 21 mm.)
+      else if (t.body && far_side_place(plan, spec.location) && !is_touch(spec.location.contact) &&
+               spec.location.level == BodyLevel::ShoulderTop) {
+        const glm::vec3 written = st.target;
+        const ArmRig& arm = rig.arms[plan.side];
+        // Scored on the whole rest pose with the arm solved into it (the finger joints an arm
+        // solve leaves keep their rest rotations): posed as the sign's frames pose it instead,
+        // every candidate's arm measured 38-54 mm and the fist held off the far shoulder top
+        // went from 13 to 38 mm. Not yet understood; the figure is held by HandsAcrossTheBody.
+        PoseBuilder posed(rig);
+        auto cost = [&](const ArmPose& p, glm::vec3 target) {
+          posed.set_from_local(ctx.rest_locals.data());
+          apply_arm(rig, plan.side, p, &posed);
+          pose_fingers(rig, plan.side, st.angles, p.hand, &posed);
+          posed.finalize();
+          const float depth = std::max(arm_penetration(ctx.body, posed, plan.side, true, false, false).depth_m,
+                                       hand_penetration(ctx.body, posed, plan.side, true, false).depth_m);
+          const float behind = std::max(0.0f, -glm::dot(posed.position(arm.lower) - posed.position(arm.upper), rig.forward));
+          return 1000.0f * std::max(0.0f, depth - 0.002f) + 100.0f * behind + 3.0f * p.orientation_error_rad +
+                 20.0f * p.reach_error_m + 1.5f * glm::length(target - written);
+        };
+        float best_cost = cost(best, written);
+        const glm::vec3 n = glm::normalize(anchor.normal);
+        // (Held further off, up to 8 cm, cleared more, but the per-frame pushes then left some
+        // hands beyond the 10 cm band.)
+        const float distance = contact_distance(spec.location.contact, false);
+        for (float fwd : {0.0f, 0.5f, 1.0f, 2.0f, 4.0f})
+          for (float up : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f}) {
+            const glm::vec3 away = n + fwd * rig.forward + up * rig.up;
+            if (glm::length(away) < 0.3f) continue;  // back into the place (the shoulder top's normal is up)
+            t.point = anchor.point + distance * glm::normalize(away);
+            ArmPose p = solve_arm(rig, plan.side, t);
+            const float c = cost(p, t.point);
+            if (c < best_cost) {
+              best_cost = c;
+              best = p;
+              st.target = t.point;
+            }
+          }
+      }
       // An orientation that puts the arm in the body gives way (arm_ik.h).
       t.point = st.target;
       if (turn_hand_out_of_body(rig, plan.side, &t, &best)) st.delta = t.hand_delta;
@@ -281,14 +399,79 @@ struct Solver {
   }
 };
 
+// A one-handed sign whose hand comes to rest in the other arm, which hangs at rest (the right
+// hand beside the far side of the belly, waist or hip, where the left arm hangs: up to 43 mm in
+// its forearm): the resting arm gives way, as a signer's does. It swings rigidly about its
+// shoulder joint — out to its side, forward or back — by the smallest of 0.1-0.5 rad that takes
+// the hand and forearm out of it (2 mm) without putting the resting arm into the trunk; the
+// model-space rotation, identity when nothing is in the way, is applied to that arm's joints
+// from the upper arm down in every frame of the sign (the transitions blend it in from the rest).
+glm::quat resting_arm_gives_way(Solver& solver, const std::array<HandPlan, 2>& plans,
+                                const std::array<HandState, 2>& key, int resting) {
+  const SynthContext& ctx = solver.ctx;
+  const Rig& rig = ctx.rig;
+  const glm::quat none(1, 0, 0, 0);
+  const int active = 1 - resting;
+  if (!ctx.options.avoid_collisions || plans[resting].active || !plans[active].active ||
+      plans[active].on_other_hand)
+    return none;
+  const Side act = plans[active].side, rest_side = plans[resting].side;
+  const ArmRig& ra = rig.arms[rest_side];
+  // Only a hand well over on the resting arm's side can be in it (most signs: no check at all).
+  const glm::vec3 outward = rest_side == kLeft ? rig.left : -rig.left;
+  const glm::vec3 mid = rig.bind_pos[rig.chest];
+  if (glm::dot(key[active].target - mid, outward) < 0.5f * glm::dot(rig.bind_pos[ra.upper] - mid, outward))
+    return none;
+  PoseBuilder rest(rig);
+  rest.set_from_local(ctx.rest_locals.data());
+  ArmTarget t;
+  t.point = key[active].target;
+  t.contact_offset = key[active].offset;
+  t.hand_delta = key[active].delta;
+  t.auto_swivel = false;
+  t.swivel_rad = key[active].swivel;
+  t.body = &ctx.body;
+  const ArmPose ap = solve_arm(rig, act, t);
+  auto depths = [&](const glm::quat& swing, float* in_other, float* rest_in_trunk) {
+    PoseBuilder pb(rig);
+    pose_arm_at_rest(rig, rest, rest_side, swing, &pb);
+    apply_arm(rig, act, ap, &pb);
+    pose_fingers(rig, act, key[active].angles, ap.hand, &pb);
+    pb.finalize();
+    *in_other = std::max(hand_penetration(ctx.body, pb, act, false, true).depth_m,
+                         arm_penetration(ctx.body, pb, act, false, false, true).depth_m);
+    *rest_in_trunk = std::max(arm_penetration(ctx.body, pb, rest_side, true, false, false).depth_m,
+                              hand_penetration(ctx.body, pb, rest_side, true, false).depth_m);
+  };
+  float in_other = 0.0f, rest_trunk = 0.0f;
+  depths(none, &in_other, &rest_trunk);
+  if (in_other <= 0.005f) return none;
+  // Out to its side (about the forward axis), forward and back (about the sideways axis).
+  const glm::vec3 out_axis = rig.forward * (rest_side == kLeft ? 1.0f : -1.0f);
+  const glm::vec3 axes[5] = {out_axis, rig.left, -rig.left, glm::normalize(out_axis + rig.left),
+                             glm::normalize(out_axis - rig.left)};
+  for (float angle : {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.8f})
+    for (const glm::vec3& axis : axes) {
+      const glm::quat swing = axis_angle(axis, angle);
+      float d = 0.0f, trunk = 0.0f;
+      depths(swing, &d, &trunk);
+      if (d <= 0.002f && trunk <= std::max(rest_trunk, 0.002f)) return swing;
+    }
+  return none;
+}
+
 // Hands that cross at their key pose (LOVE's fists on the chest, DIFFERENT's index fingers,
 // BOOK's palms together) are written at the same place, so the two arms were solved through each
 // other (forearm through forearm by up to 74 mm). Signers lay one in front of the other: the
 // dominant hand comes forward along the body's forward axis by the measured overlap of forearms
 // or hands plus 4 mm (so they touch, 5 mm rule), with a fresh swivel, until clear (4 rounds: the
 // forearm's angle changes as the hand moves, so one step can fall short).
+//
+// `near`: the swivels this pose is reached from (a movement's goal: its start). The fresh swivel
+// is then chosen near them (arm_ik.h ArmTarget::near_swivel_rad), so the separation does not
+// swing the elbow to another branch on the way to the goal.
 void separate_crossed_hands(Solver& solver, const std::array<HandPlan, 2>& plans,
-                            std::array<HandState, 2>* key) {
+                            std::array<HandState, 2>* key, const std::array<HandState, 2>* near = nullptr) {
   const SynthContext& ctx = solver.ctx;
   const Rig& rig = ctx.rig;
   if (!ctx.options.avoid_collisions || !plans[0].active || !plans[1].active) return;
@@ -326,6 +509,10 @@ void separate_crossed_hands(Solver& solver, const std::array<HandPlan, 2>& plans
     (*key)[0].target += (pen.depth_m + 0.004f) * dir;
     ArmTarget t = target_of(0);
     t.auto_swivel = true;
+    if (near) {
+      t.has_near_swivel = true;
+      t.near_swivel_rad = (*near)[0].swivel;
+    }
     (*key)[0].swivel = solve_arm(rig, d, t).swivel_rad;
   }
 }
@@ -543,6 +730,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i].swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
   }
   separate_crossed_hands(solver, plans, &key);
+  std::array<glm::quat, 2> give_way = {resting_arm_gives_way(solver, plans, key, 0),
+                                       resting_arm_gives_way(solver, plans, key, 1)};
 
   // Segments: (step, reversed, return-to-start). Repetitions per seed/HamNoSys.
   struct Segment { int step; bool reversed; bool back_to_start; };
@@ -612,6 +801,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         for (int i = 0; i < 2; ++i)
           for (const auto& m : ms[i]) duration = std::max(duration, movement_duration_s(m));
       } else {
+        bool goal_changed = false;
         for (int i = 0; i < 2; ++i) {
           if (!plans[i].active || seg.step >= static_cast<int>(plans[i].steps.size())) continue;
           ms[i] = plans[i].steps[seg.step];
@@ -629,6 +819,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
               changed = true;
             }
             if (changed) {
+              goal_changed = true;
               bool ok = true;
               HandState g = solver.key_state(plans[i], spec, &ok, nullptr, &goal[i].swivel);
               if (!ok) return false;
@@ -695,6 +886,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             }
           }
         }
+        // Hands that meet at the goal are laid apart there, as at the key pose (BOOK: the
+        // palms-together hands turn palms up where they met and overlap). Left to the per-frame
+        // push (which moves the second hand solved, out of the first), the separation came on within a few frames at the
+        // end of the movement and its residual rounds jumped (the left wrist 83 mm in a frame,
+        // 86 mm change of step on the avatar). Decided at the goal, it is interpolated along the
+        // movement like the rest of the state.
+        if (goal_changed) separate_crossed_hands(solver, plans, &goal, &from);
         for (int i = 0; i < 2; ++i)
           for (const auto& m : ms[i]) relocated[i] = relocated[i] || m.to_location.has_value();
         seg_start[seg.step] = from;
@@ -757,7 +955,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // one. Then this frame uses the nearest swivel that clears it (the hand's target, orientation
   // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
   auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
-                       PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel) {
+                       PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel, float prefer,
+                       float min_gain_m) {
     // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
     // within its limits, and the hand must not turn into the body instead.
     auto depth_of = [&]() {
@@ -778,19 +977,23 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     const float base_reach = base_pose.reach_error_m;
     float best_depth = depth, best_swivel = base;
     ArmPose best_pose = base_pose;  // the winner's pose, kept (solving it again gave the same)
-    for (int k = 1; k <= 12 && best_depth > 0.002f; ++k) {
-      for (float sign : {1.0f, -1.0f}) {
-        t->swivel_rad = base + sign * 0.1f * static_cast<float>(k);
-        ArmPose ap = solve_arm(rig, plan.side, *t);
-        if (ap.reach_error_m > base_reach + 0.002f) continue;  // a touch must still touch
-        float d = depth_with(ap);
-        if (d < best_depth - 1e-4f) {
-          best_depth = d;
-          best_swivel = t->swivel_rad;
-          best_pose = ap;
-        }
-        if (best_depth <= 0.002f) break;
-      }
+    // With a preferred side (the way earlier ramp rounds already turned this frame's elbow),
+    // the nearest clear swivel on the other side no longer wins at once: it flipped the fix's
+    // sign between neighbouring frames (TELL's, THANK-YOU's elbow leaving the chin: -0.1 then
+    // +0.1 rad, where +0.2 also cleared the first), and the ramp, which follows the larger
+    // neighbour, then jumped by 0.3 rad between them (the elbow 78 mm in a frame).
+    std::array<ArmPose, 25> tried;  // by step: 12 + k on the + side, 12 - k on the - side
+    const SwivelChoice choice = nearest_clear_swivel(depth, 0.002f, prefer, min_gain_m, [&](float offset, bool* usable) {
+      t->swivel_rad = base + offset;
+      ArmPose& ap = tried[static_cast<size_t>(12 + std::lround(offset * 10.0f))];
+      ap = solve_arm(rig, plan.side, *t);
+      *usable = ap.reach_error_m <= base_reach + 0.002f;  // a touch must still touch
+      return *usable ? depth_with(ap) : 0.0f;
+    });
+    if (choice.offset_rad != 0.0f) {
+      best_depth = choice.depth_m;
+      best_swivel = base + choice.offset_rad;
+      best_pose = tried[static_cast<size_t>(12 + std::lround(choice.offset_rad * 10.0f))];
     }
     t->swivel_rad = best_swivel;
     *applied_swivel = best_swivel - base;
@@ -820,6 +1023,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // The hand turns and swivel offsets clear_arm applied, per frame and hand (identity / 0: none).
   std::vector<std::array<glm::quat, 2>> turns(frames.size());
   std::vector<std::array<float, 2>> swivel_fixes(frames.size());
+  // The swivel offsets the ramp rounds added to each frame so far (clear_arm's preferred side).
+  std::vector<std::array<float, 2>> swivel_ramped(frames.size(), {0.0f, 0.0f});
   // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
   std::vector<std::array<glm::vec3, 2>> push_offsets(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
   // A wrist that flips: where a hand's requested orientation is out of the wrist's reach, the
@@ -838,6 +1043,14 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // in a frame), 9 rad/s raised STUDENT's step change to 96 mm.
   constexpr float kWristFlipRadPerS = 15.0f;
   constexpr float kWristTurnRadPerS = 6.0f;
+  // On a path (a frame whose states differ from the previous one's), a swivel that leaves the
+  // arm in the body gaining less than kMinSwivelGainM is no fix: among near-equal depths the
+  // best moved by noise from frame to frame (THANK-YOU at the end of its path, arm 80 mm in at
+  // any swivel: +0.1 rad gaining 0.1 mm at one frame, +0.6 gaining 0.4 mm at the next, each
+  // with its own turn of the hand: 71 mm change of step). Held frames keep every gain (a key
+  // pose has no neighbour to jump against, and the transitions start from it: 1 mm there
+  // deepened the far-side rest transitions by up to 2 mm).
+  constexpr float kMinSwivelGainM = 0.001f;
   // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
   std::vector<std::array<ArmPose, 2>> solved(frames.size());
   std::vector<std::array<char, 2>> continued(frames.size(), {0, 0});
@@ -877,17 +1090,12 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         continue;
       }
       const int pushes_before = out->pushes;
+      const bool moving = f > 0 && !same_states(frames[f], frames[f - 1]);
       PoseBuilder pb(rig);
-      // Inactive hands keep the rest pose.
-      for (int i = 0; i < 2; ++i) {
-        if (plans[i].active) continue;
-        const ArmRig& a = rig.arms[plans[i].side];
-        for (int j = 0; j < J; ++j) {
-          int p = j;
-          while (p >= 0 && p != a.shoulder && p != a.upper) p = rig.parent[p];
-          if (p >= 0) pb.set(j, rest.delta(j));
-        }
-      }
+      // Inactive hands keep the rest pose (the arm swung out of the other hand's way, if it is
+      // in it: resting_arm_gives_way).
+      for (int i = 0; i < 2; ++i)
+        if (!plans[i].active) pose_arm_at_rest(rig, rest, plans[i].side, give_way[i], &pb);
       pb.finalize();
       for (int oi = 0; oi < 2; ++oi) {
         int i = order[oi];
@@ -947,7 +1155,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         turns[f][i] = glm::quat(1, 0, 0, 0);
         swivel_fixes[f][i] = 0.0f;
         if (ctx.options.avoid_collisions)
-          clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i]);
+          clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i],
+                    swivel_ramped[f][i] > 0.05f ? 1.0f : swivel_ramped[f][i] < -0.05f ? -1.0f : 0.0f,
+                    moving ? kMinSwivelGainM : 0.0f);
       }
       pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
       out->exempt[f] = exempt;
@@ -979,16 +1189,19 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   solve_frames(nullptr);
   // A turn decided frame by frame starts (and ends) at once: the hand would jump (a 60 degree
   // turn about a fingertip moves the wrist 17 cm in one frame). Ramp every turn in and out over
-  // the 6 frames around it (the largest of the neighbours' turns, scaled down linearly with the
-  // distance), fold the ramped turns into the frames' orientations, and solve once more.
+  // the kRamp frames around it (the largest of the neighbours' turns, scaled by the smoothstep
+  // envelope of frame_corrections.h), fold the ramped turns into the frames' orientations, and
+  // solve once more. The envelope was a linear tent over 6 frames: a turn needed by one frame
+  // (THANK-YOU's hand at the end of its path) then peaked with a kink, the wrist went out and
+  // came back at once (94 mm change of step on the reference rig; a smoothstep over 6 frames
+  // 74 mm, over 8 frames 71 mm).
   //
   // The swivel fix has the same defect: it holds the elbow (and, through the wrist limits, the
   // wrist) out of the body for the frames that need it and lets go at once (GOOD: the wrist moved
-  // 17 cm in one frame). The offsets are ramped the same way but with a smoothstep envelope over
-  // kSwivelRamp frames (zero slope at both ends, so no velocity step where the ramp starts) and
-  // added to the frames' swivels before the second solve; clear_arm then finds those frames clear
+  // 17 cm in one frame). The offsets are ramped the same way over kSwivelRamp frames and added
+  // to the frames' swivels before the second solve; clear_arm then finds those frames clear
   // and leaves them alone.
-  constexpr int kRamp = 6;
+  constexpr int kRamp = 8;
   constexpr int kSwivelRamp = 8;  // 0.27 s at 30 fps: a 1.2 rad fix moves the elbow < 4 cm/frame
   // The second solve can still find a frame that needs a correction (the corrections of the two
   // hands interact: BOOK's palms together, the left elbow cleared for 3 frames, 11 cm change of
@@ -1005,19 +1218,12 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (any_swivel) {
     const int n = out->frame_count;
     for (int i = 0; i < 2; ++i) {
-      std::vector<float> ramped(n, 0.0f);
-      for (int f = 0; f < n; ++f) {
-        float best = 0.0f;
-        for (int g = std::max(0, f - kSwivelRamp); g <= std::min(n - 1, f + kSwivelRamp); ++g) {
-          float x = static_cast<float>(std::abs(f - g)) / static_cast<float>(kSwivelRamp + 1);
-          float w = 1.0f - x * x * (3.0f - 2.0f * x);  // smoothstep down to 0 at kSwivelRamp + 1
-          float o = w * swivel_fixes[g][i];
-          if (std::abs(o) > std::abs(best)) best = o;
-        }
-        ramped[f] = best;
-      }
+      std::vector<float> fix(n);
+      for (int f = 0; f < n; ++f) fix[f] = swivel_fixes[f][i];
+      const std::vector<float> ramped = ramp_scalars(fix, kSwivelRamp);
       for (int f = 0; f < n; ++f) {
         frames[f].hand[i].swivel += ramped[f];
+        swivel_ramped[f][i] += ramped[f];
         if (ramped[f] != 0.0f) redo[f] = 1;
       }
     }
@@ -1032,16 +1238,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (any_push) {
     const int n = out->frame_count;
     for (int i = 0; i < 2; ++i) {
-      std::vector<glm::vec3> ramped(n, glm::vec3(0.0f));
-      for (int f = 0; f < n; ++f) {
-        glm::vec3 best(0.0f);
-        for (int g = std::max(0, f - kSwivelRamp); g <= std::min(n - 1, f + kSwivelRamp); ++g) {
-          float x = static_cast<float>(std::abs(f - g)) / static_cast<float>(kSwivelRamp + 1);
-          glm::vec3 o = (1.0f - x * x * (3.0f - 2.0f * x)) * push_offsets[g][i];
-          if (glm::length(o) > glm::length(best)) best = o;
-        }
-        ramped[f] = best;
-      }
+      std::vector<glm::vec3> fix(n);
+      for (int f = 0; f < n; ++f) fix[f] = push_offsets[f][i];
+      const std::vector<glm::vec3> ramped = ramp_offsets(fix, kSwivelRamp);
       for (int f = 0; f < n; ++f) {
         frames[f].hand[i].target += ramped[f];
         if (glm::length(ramped[f]) > 0.0f) redo[f] = 1;
@@ -1051,20 +1250,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (any_turn || any_swivel || any_push) {
     const int n = out->frame_count;
     for (int i = 0; any_turn && i < 2; ++i) {
-      std::vector<glm::quat> ramped(n);
-      for (int f = 0; f < n; ++f) {
-        glm::quat r = turns[f][i];
-        float best = rotation_angle(r);
-        for (int g = std::max(0, f - kRamp); g <= std::min(n - 1, f + kRamp); ++g) {
-          float w = 1.0f - static_cast<float>(std::abs(f - g)) / static_cast<float>(kRamp + 1);
-          float a = w * rotation_angle(turns[g][i]);
-          if (a > best + 1e-4f) {
-            best = a;
-            r = slerp_shortest(glm::quat(1, 0, 0, 0), turns[g][i], w);
-          }
-        }
-        ramped[f] = r;
-      }
+      std::vector<glm::quat> fix(n);
+      for (int f = 0; f < n; ++f) fix[f] = turns[f][i];
+      const std::vector<glm::quat> ramped = ramp_turns(fix, kRamp);
       for (int f = 0; f < n; ++f) {
         frames[f].hand[i].delta = ramped[f] * frames[f].hand[i].delta;
         if (rotation_angle(ramped[f]) > 0.0f) redo[f] = 1;

@@ -72,6 +72,53 @@ bool off_body(const std::string& name) {
          name.find("/tongue/") != std::string::npos;
 }
 
+// The body's silhouette seen from the front at height y: how far its skin reaches to the signer's
+// left (sign +1, +X) or right (sign -1) in a horizontal slice through the mesh, arms and hands
+// left out (on a T-posed avatar they run sideways from the shoulders; a `*_beside` place is
+// beside the body, where the signer's own arm would hang). Each triangle belongs to the dominant
+// joint of its first vertex (as body_anchors.cpp's raycast does).
+float silhouette_reach(const Avatar& a, float y, float sign) {
+  const auto is_arm = [&](std::size_t joint) {
+    if (joint >= a.skeleton.joints.size()) return false;
+    const std::string& n = a.skeleton.joints[joint].name;
+    for (const char* part : {"UpperArm", "LowerArm", "Hand", "Thumb", "Index", "Middle", "Ring", "Little"})
+      if (n.find(part) != std::string::npos) return true;
+    return false;
+  };
+  const auto& m = a.mesh;
+  float reach = -1e30f;
+  for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    const std::uint32_t v0 = m.indices[t];
+    const glm::vec4 w = m.weights[v0];
+    int best = 0;
+    for (int k = 1; k < 4; ++k) if (w[k] > w[best]) best = k;
+    if (is_arm(m.joints[v0][static_cast<std::size_t>(best)])) continue;
+    // Where the triangle's edges cross the plane at height y.
+    for (int e = 0; e < 3; ++e) {
+      const glm::vec3 p = m.positions[m.indices[t + static_cast<std::size_t>(e)]];
+      const glm::vec3 q = m.positions[m.indices[t + static_cast<std::size_t>((e + 1) % 3)]];
+      if ((p.y - y) * (q.y - y) > 0.0f || p.y == q.y) continue;
+      const glm::vec3 x = p + (q - p) * ((y - p.y) / (q.y - p.y));
+      reach = std::max(reach, sign * x.x);
+    }
+  }
+  return reach;
+}
+
+// Every `*_beside` anchor lies beside the body: lateral to its silhouette at the anchor's height,
+// by at least 1 cm (off the skin), on its own side.
+void expect_beside_outside_the_silhouette(const Avatar& a) {
+  for (const Anchor& anchor : a.anchors) {
+    const std::string& n = anchor.name;
+    if (n.rfind("body/", 0) != 0 || n.find("_beside") == std::string::npos) continue;
+    const float sign = n.find("left_beside") != std::string::npos ? 1.0f : -1.0f;
+    const glm::vec3 p = world(a, n);
+    const float skin = silhouette_reach(a, p.y, sign);
+    EXPECT_GT(sign * p.x, skin + 0.01f) << n << " at x = " << p.x << ", the body reaches " << sign * skin
+                                        << " at its height " << p.y;
+  }
+}
+
 void expect_every_anchor_once(const Avatar& a) {
   const std::vector<std::string> names = body_anchor_names();
   EXPECT_EQ(names.size(), 23u * 5 + 5 + 2 * (7 + 5 * 6) + 2 * 5);
@@ -154,6 +201,15 @@ TEST(BodyAnchors, OnBodyAnchorsLieOnTheSkin) {
   expect_on_surface(a, 0.01f);
 }
 
+// The `*_beside` places are beside the body, not on it or in front of it. The project avatar's
+// `body/shoulders/left_beside` was 0.128 m out, in front of the shoulder: at the shoulder joints'
+// height a T-posed avatar's sideways ray runs along the arm and finds no skin, and the 8 cm
+// fallback width put the place inside the shoulder's silhouette (RealAvatarModel checks it there).
+TEST(BodyAnchors, BesidePlacesLieOutsideTheSilhouette) {
+  const Avatar a = load_synthetic();
+  expect_beside_outside_the_silhouette(a);
+}
+
 TEST(BodyAnchors, LeftMirrorsRight) {
   const Avatar a = load_synthetic();
   expect_mirrored(a, 0.005f);
@@ -232,6 +288,7 @@ TEST(BodyAnchors, RealAvatarModel) {
   expect_levels_ordered(r.avatar);
   expect_on_surface(r.avatar, 0.01f);
   expect_mirrored(r.avatar, 0.01f);
+  expect_beside_outside_the_silhouette(r.avatar);
 }
 
 }  // namespace

@@ -273,9 +273,10 @@ TEST(SynthesisCollision, ArmInsideTheTorsoIsDetectedAndTheRestPoseIsClean) {
 
 // Hands at the places across the body (the non-dominant side), where the forearm crosses the
 // chest and the elbow could sink into the torso: the arm stays out of the trunk by 5 mm, with
-// touch and close contact, three hand configurations, on the reference humanoid and the
-// re-rigged variant (all places) and on the project's avatar (the places it passes; the rest are
-// known gaps in docs/SYNTHESIS.md). The `left_beside` places: HandBesideTheFarSide... below.
+// touch and close contact, three hand configurations, on the reference humanoid, the re-rigged
+// variant and the project's avatar (all places; the project avatar's known gaps, each held to
+// its measured depth rounded up, are in docs/SYNTHESIS.md). The `left_beside` places:
+// HandBesideTheFarSide... below.
 TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
   struct Place { BodyLevel level; Side side; };
   const std::vector<Place> all_places = {
@@ -285,17 +286,21 @@ TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
       {BodyLevel::Chest, Side::Left},     {BodyLevel::Stomach, Side::Left},
       {BodyLevel::Waist, Side::Left},
   };
-  const std::vector<Place> project_places = {
-      {BodyLevel::Cheeks, Side::Left}, {BodyLevel::Chin, Side::Left},
-      {BodyLevel::Chest, Side::Left},  {BodyLevel::Stomach, Side::Left},
-  };
-  struct Rig_ { avatar::Avatar avatar; const std::vector<Place>* places; };
+  // The project avatar, worst of the three hands and two contacts: the ears' forearm in the head
+  // 41.5 mm (the pointing hand held off; a fist touching 31 mm); the shoulder top 13.0 mm (a
+  // fist held off; 102-116 mm before its held-off direction was searched, sign_motion.cpp); the
+  // shoulders 8.5 mm (before the anchor fix and the routing: 96 mm); the neck 5.7 mm.
+  const std::map<BodyLevel, float> project_known_mm = {
+      {BodyLevel::Ears, 42.0f}, {BodyLevel::ShoulderTop, 13.5f}, {BodyLevel::Shoulders, 9.0f},
+      {BodyLevel::Neck, 6.0f}};
+  const std::map<BodyLevel, float> none;
+  struct Rig_ { avatar::Avatar avatar; const std::map<BodyLevel, float>* known; };
   std::vector<Rig_> rigs;
-  rigs.push_back({make_reference_humanoid(), &all_places});
-  rigs.push_back({make_rotated_variant(0.9f), &all_places});
+  rigs.push_back({make_reference_humanoid(), &none});
+  rigs.push_back({make_rotated_variant(0.9f), &none});
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({std::move(project.avatar), &project_places});
+  if (project.present) rigs.push_back({std::move(project.avatar), &project_known_mm});
   struct Hand { notation::HandShape shape; Direction finger, palm; };
   const Hand hands[] = {
       {flat(), {0, 1, 0}, {0, 0, -1}},   // flat, palm on the body
@@ -309,7 +314,7 @@ TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
     SynthContext ctx;
     std::string error;
     ASSERT_TRUE(make_context(rigs[v].avatar, SynthesisOptions{}, &ctx, &error)) << error;
-    for (const Place& pl : *rigs[v].places)
+    for (const Place& pl : all_places)
       for (Contact c : {Contact::Touch, Contact::Close})
         for (const Hand& h : hands) {
           notation::SignSpec s = sign_at(h.shape, pl.level, pl.side, c);
@@ -319,11 +324,23 @@ TEST(SynthesisCollision, HandsAcrossTheBodyKeepTheArmOutOfTheTrunk) {
           ASSERT_TRUE(r.ok()) << r.errors[0].message;
           std::string what;
           float d = worst_arm_depth(ctx, r, &what);
-          EXPECT_LE(d, 0.005f) << "avatar " << v << " level " << int(pl.level) << " side " << int(pl.side)
+          const auto k = rigs[v].known->find(pl.level);
+          const float bound_m = k == rigs[v].known->end() ? 0.005f : 0.001f * k->second;
+          EXPECT_LE(d, bound_m) << "avatar " << v << " level " << int(pl.level) << " side " << int(pl.side)
                                << " contact " << int(c) << ": " << what;
           // The synthesis report counts the arms too.
           EXPECT_GE(r.report.max_penetration_m + 1e-6f, d);
           worst = std::max(worst, d);
+          // Held off in whichever direction keeps the arm out, the hand is still 3-10 cm away.
+          // Known gap: on the project avatar the hand held off the far side of the neck is pushed
+          // out of the jaw to 10.8-11.3 cm (docs/SYNTHESIS.md).
+          if (c == Contact::Close) {
+            ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
+            const bool neck_gap = rigs[v].known == &project_known_mm && pl.level == BodyLevel::Neck;
+            EXPECT_GE(r.report.contact_distances_m[0], 0.03f) << "avatar " << v << " level " << int(pl.level);
+            EXPECT_LE(r.report.contact_distances_m[0], neck_gap ? 0.115f : 0.10f) << "avatar " << v << " level "
+                                                                                  << int(pl.level);
+          }
         }
   }
   RecordProperty("worst_arm_depth_mm", std::to_string(worst * 1000.0f));
@@ -350,32 +367,39 @@ void crossing_arm_depths(const SynthContext& ctx, const SynthesisResult& r, Side
   }
 }
 
-// The dominant hand beside the FAR side of the body (`left_beside` from the forehead to the
-// belly; touch, close and no contact; a flat hand, fingers up, palm in): the arm reaches round
+// The dominant hand beside the FAR side of the body (`left_beside` from the forehead to below the
+// waist; touch, close and no contact; a flat hand, fingers up, palm in): the arm reaches round
 // the front of the chest (the place held off in front, the shoulder girdle protracted) instead
 // of through the torso. Before that, in the key poses, the upper arm was 22-83 mm in the torso
 // at the shoulders to the belly on the reference humanoid (8-24 mm at the face and neck) and
 // 13-22 mm on the project avatar, and the transitions from and back to rest cut through by
-// 95-131 mm (now each clip's worst frame is its key pose's). Bounds: 5 mm (the rule) except
-// where measured deeper, rounded up, per rig. Waist and below are known gaps (docs/SYNTHESIS.md).
+// 95-131 mm (now each clip's worst frame is its key pose's). From the belly down a hand held off
+// the place is searched round it within the contact band (sign_motion.cpp key_state): before,
+// the reference humanoid's belly 7.1 / 7.4 mm (close / none), waist 25.7 / 10.2 mm (its clip
+// 31.3 / 19.2), below the waist 26.6 / 17.5 mm; the project avatar's below the waist 56.6 /
+// 57.3 mm. Bounds: 5 mm (the rule) except where measured deeper, rounded up, per rig.
 TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
-  struct Bounds { float close_mm, none_mm; };  // key pose and clip; touch: 5 mm everywhere
+  struct Bounds { float touch_mm, close_mm, none_mm; };  // key pose and clip
   struct Rig_ {
     std::string name;
     avatar::Avatar avatar;
     std::map<BodyLevel, Bounds> known;
   };
   std::vector<Rig_> rigs;
-  // Reference humanoid, belly: 7.1 mm close, 7.4 mm none (the upper arm by the chest's lower
-  // corner; the elbow cannot come further forward with the hand that low and that far across).
-  rigs.push_back({"reference", make_reference_humanoid(), {{BodyLevel::Belly, {8.0f, 8.0f}}}});
+  // Reference humanoid, waist: 9.7 mm close and none (the upper arm by the chest's lower corner;
+  // no place within 10 cm of the anchor lets the elbow come further forward).
+  rigs.push_back({"reference", make_reference_humanoid(), {{BodyLevel::Waist, {5.0f, 10.0f, 10.0f}}}});
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar), {}});
+  // Project avatar below the waist: the place 28 cm out from the midline, the arm at full
+  // stretch across the hips; touch 8.0 mm (its rest transitions 11.1 mm before they were judged
+  // by what they add beyond the key pose), close and none 12.9 mm.
+  if (project.present)
+    rigs.push_back({"avatar", std::move(project.avatar), {{BodyLevel::BelowWaist, {8.5f, 13.0f, 13.0f}}}});
   const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,      BodyLevel::Mouth,
                               BodyLevel::Chin,     BodyLevel::Neck,      BodyLevel::Shoulders,
                               BodyLevel::ShoulderTop, BodyLevel::Chest,  BodyLevel::Stomach,
-                              BodyLevel::Belly};
+                              BodyLevel::Belly,    BodyLevel::Waist,     BodyLevel::BelowWaist};
   float worst_key = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
@@ -396,8 +420,8 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
         crossing_arm_depths(ctx, r, kRight, &key, &clip);
         float bound_mm = 5.0f;
         auto k = rg.known.find(level);
-        if (k != rg.known.end() && c != Contact::Touch)
-          bound_mm = c == Contact::Close ? k->second.close_mm : k->second.none_mm;
+        if (k != rg.known.end())
+          bound_mm = c == Contact::Touch ? k->second.touch_mm : c == Contact::Close ? k->second.close_mm : k->second.none_mm;
         EXPECT_LE(key * 1000.0f, bound_mm) << where << " (key pose)";
         EXPECT_LE(clip * 1000.0f, bound_mm) << where << " (whole clip)";
         worst_key = std::max(worst_key, key);
@@ -405,7 +429,10 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
         ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
         const float reach = r.report.contact_distances_m[0];
         if (c == Contact::Touch) {
-          EXPECT_LT(reach, 0.01f) << where;
+          // Known gap: the project avatar's touch beside the far side of the waist stops 14.5 mm
+          // short (the hand pushed out of the hip; docs/SYNTHESIS.md).
+          const bool short_touch = rg.name == "avatar" && level == BodyLevel::Waist;
+          EXPECT_LT(reach, short_touch ? 0.015f : 0.01f) << where;
         } else {
           EXPECT_GE(reach, 0.03f) << where;
           EXPECT_LE(reach, 0.10f) << where;
@@ -457,26 +484,16 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
   // (fingers to the left), 4 pointing up-left (the previous measurements' hands).
   // clip_mm: measured now, rounded up (before the chain, in brackets: arm depth in the clip; the
   // plan minimises the report's depth, hand included, which no case made worse).
-  const std::vector<Known> known = {
-      {{"reference", 0, BodyLevel::Waist, Contact::Close}, 32.0f},    // 31.3 (25.7; report 33.5 -> 31.6)
-      {{"reference", 0, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.2 (32.4)
-      {{"reference", 1, BodyLevel::Stomach, Contact::Close}, 8.5f},   // 7.9 (7.9)
-      {{"reference", 1, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.5 (15.2; report 31.1 both)
-      {{"reference", 1, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
-      {{"reference", 2, BodyLevel::Stomach, Contact::Close}, 8.5f},   // 8.0 (8.0)
-      {{"reference", 2, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.6 (16.1; report 28.8 both)
-      {{"reference", 2, BodyLevel::Belly, Contact::None}, 12.0f},     // 11.3 (11.3)
-      {{"reference", 2, BodyLevel::Waist, Contact::None}, 20.0f},     // 19.1 (36.9)
-      {{"avatar", 0, BodyLevel::BelowWaist, Contact::Touch}, 12.0f},  // 11.1 (14.1)
-      // Across the body (fist fingers to the left, pointing hand up-left):
-      {{"reference", 3, BodyLevel::Belly, Contact::Touch}, 30.0f},    // 29.4 (21.3; report 40.2 both)
-      {{"reference", 3, BodyLevel::Belly, Contact::Close}, 23.0f},    // 22.7 (30.5)
-      {{"reference", 3, BodyLevel::Waist, Contact::Touch}, 37.5f},    // 37.0 (35.8; report 38.1 -> 37.0)
-      {{"reference", 4, BodyLevel::Stomach, Contact::Close}, 10.0f},  // 9.6 (9.6)
-      {{"reference", 4, BodyLevel::Belly, Contact::Close}, 20.0f},    // 19.6 (14.9; report 30.0 both)
-      {{"avatar", 3, BodyLevel::Waist, Contact::Close}, 14.5f},       // 13.9 (13.9)
-      {{"avatar", 4, BodyLevel::BelowWaist, Contact::Touch}, 9.5f},   // 9.1 (13.7)
-  };
+  // Since the held-off places from the belly down are searched round the anchor (key_state)
+  // and a routed path is judged by what it adds beyond its end poses (transition.cpp), every
+  // other case stays within its key pose + 0.5 mm (before: 16 cases 8-32 mm beyond the bound,
+  // among them the reference humanoid's fist across the body at the belly, touch, 29.4 mm for a
+  // key pose of 21.3, and the project avatar's fist across the body at the waist, 13.9 mm for 1.2);
+  // the last, the reference humanoid's fist across the body at the waist, touch (37.0 mm for a key
+  // pose of 35.4), since the resting arm gives way. None is left.
+  const std::vector<Known> known = {};
+
+
   struct Rig_ { std::string name; avatar::Avatar avatar; };
   std::vector<Rig_> rigs;
   rigs.push_back({"reference", make_reference_humanoid()});
@@ -521,20 +538,21 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
 }
 
 // Sign to sign across the body: from a far-side beside place (flat, fist, pointing hand; touch
-// and close) to the dominant side's beside place and back, the transitions route round the front
-// like the rest transitions. The arm's depth in the trunk over the transition frames stays within
-// the deeper of the signs' own depth and 5 mm, plus a margin measured per rig: before the
-// waypoint chain the transitions added up to 127 mm (reference) and 104 mm (project avatar) over
-// that in this set; now 1.6 mm and 0 (bounds: 2 mm, and 0.5 mm for float noise). A wider sweep
-// (four far levels, the near side and beside it: 192 phrases a rig) still finds up to 7.3 / 11 mm
-// added in 16 / 13 phrases (before: 127 / 126 mm in 68 / 49), docs/SYNTHESIS.md.
+// and close; the shoulder top, chest, stomach and waist) to the dominant side's place or beside
+// it (shoulders to waist) and back, 192 phrases a rig: the transitions route round the front like
+// the rest transitions, and no transition frame puts the arm deeper in the trunk than the deeper
+// of the signs' own depth and 5 mm (0.5 mm for sampling). Before the waypoint chain they added up
+// to 127 / 126 mm (reference / project avatar) in 68 / 49 phrases; after it still 7.3 / 11 mm in
+// 16 / 13: a routed path was judged by its deepest frame of any kind, and at the far side's waist
+// the key pose's hand in the other, hanging forearm (21.6 mm) hid what the arm did on the way
+// (9 mm beyond its key pose). Now each kind is judged by what it adds beyond the end poses.
 TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
-  struct Rig_ { std::string name; avatar::Avatar avatar; float excess_mm; };
+  struct Rig_ { std::string name; avatar::Avatar avatar; };
   std::vector<Rig_> rigs;
-  rigs.push_back({"reference", make_reference_humanoid(), 2.0f});
+  rigs.push_back({"reference", make_reference_humanoid()});
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar), 0.5f});
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
   const notation::HandShape shapes[] = {flat(), fist(), index_point()};
   SynthesisOptions opt;
   opt.start_from_rest = false;
@@ -545,14 +563,16 @@ TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
     Synthesizer synth(rg.avatar);
     ASSERT_TRUE(synth.ok()) << synth.error();
     float worst_excess = 0.0f;
+    int phrases = 0;
     for (int shape = 0; shape < 3; ++shape)
-      for (BodyLevel far : {BodyLevel::ShoulderTop, BodyLevel::Chest, BodyLevel::Waist})
-        for (BodyLevel near : {BodyLevel::Chest, BodyLevel::Waist})
-          for (Contact c : {Contact::Touch, Contact::Close}) {
+      for (BodyLevel far : {BodyLevel::ShoulderTop, BodyLevel::Chest, BodyLevel::Stomach, BodyLevel::Waist})
+        for (BodyLevel near : {BodyLevel::Shoulders, BodyLevel::Chest, BodyLevel::Stomach, BodyLevel::Waist})
+          for (Side near_side : {Side::Right, Side::RightBeside})
+            for (Contact c : {Contact::Touch, Contact::Close}) {
             notation::SignSpec a = sign_at(shapes[shape], far, Side::LeftBeside, c);
             a.dominant.orientation.extended_finger = {0, 1, 0};
             a.dominant.orientation.palm = {0, 0, -1};
-            notation::SignSpec b = sign_at(shapes[shape], near, Side::RightBeside, Contact::None);
+            notation::SignSpec b = sign_at(shapes[shape], near, near_side, Contact::None);
             SynthesisResult r = synthesize_phrase(items_of({a, b, a}), rg.avatar, opt);
             ASSERT_TRUE(r.ok()) << r.errors[0].message;
             float in_transitions = 0.0f, in_signs = 0.0f;
@@ -569,13 +589,81 @@ TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
               }
             }
             const float excess = in_transitions - std::max(in_signs, 0.005f);
-            EXPECT_LE(excess * 1000.0f, rg.excess_mm)
+            EXPECT_LE(excess * 1000.0f, 0.5f)
                 << rg.name << " shape " << shape << " far level " << static_cast<int>(far) << " near level "
-                << static_cast<int>(near) << " contact " << static_cast<int>(c);
+                << static_cast<int>(near) << " side " << static_cast<int>(near_side) << " contact "
+                << static_cast<int>(c);
             worst_excess = std::max(worst_excess, excess);
+            ++phrases;
           }
+    EXPECT_EQ(phrases, 192);
     RecordProperty(rg.name + "_worst_transition_excess_mm", std::to_string(worst_excess * 1000.0f));
   }
+}
+
+// A one-handed sign with the hand beside the far side of the body (5 hands x the shoulders to
+// below the waist x touch, close, none; both rigs) puts the hand where the other arm hangs at
+// rest: the resting arm gives way (sign_motion.cpp, resting_arm_gives_way). Before, the hand was
+// in the other forearm by more than 5 mm in 48 of the 210 key poses, up to 43 mm (a flat hand
+// held off beside the waist: reference 26.3 / 38.4 mm close / none, the project avatar below the
+// waist 32.8 mm close). Now one key pose is left over 5 mm: the project avatar's fist touching
+// beside the far side of the belly, 6.3 mm. (The swing was first chosen on a pose started from
+// the whole rest pose, whose finger metacarpals and tips kept their rest rotations under the
+// solved hand: 19 key poses stayed in the arm, up to 28.5 mm.)
+TEST(SynthesisCollision, TheRestingArmGivesWayToAHandAtTheFarSide) {
+  struct Rig_ { std::string name; avatar::Avatar avatar; };
+  std::vector<Rig_> rigs;
+  rigs.push_back({"reference", make_reference_humanoid()});
+  ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  const notation::HandShape shapes[] = {flat(), fist(), index_point(), fist(), index_point()};
+  const Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+  const BodyLevel levels[] = {BodyLevel::Shoulders, BodyLevel::ShoulderTop, BodyLevel::Chest, BodyLevel::Stomach,
+                              BodyLevel::Belly,     BodyLevel::Waist,       BodyLevel::BelowWaist};
+  int over = 0;
+  float worst = 0.0f;
+  for (const Rig_& rg : rigs) {
+    Synthesizer synth(rg.avatar);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
+    for (int shape = 0; shape < 5; ++shape)
+      for (BodyLevel level : levels)
+        for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
+          notation::SignSpec s = sign_at(shapes[shape], level, Side::LeftBeside, c);
+          s.dominant.orientation.extended_finger = fingers[shape];
+          s.dominant.orientation.palm = {0, 0, -1};
+          SynthesisResult r = synth.sign(s, SynthesisOptions{});
+          ASSERT_TRUE(r.ok()) << r.errors[0].message;
+          float in_other = 0.0f;
+          PoseBuilder pb(ctx.rig);
+          for (const auto& sg : r.clip.segments) {
+            if (sg.kind != ClipSegment::Kind::Sign) continue;
+            const int f0 = static_cast<int>(std::lround(sg.start_s * r.clip.fps));
+            const int f1 = std::min(r.clip.frame_count - 1, static_cast<int>(std::lround(sg.end_s * r.clip.fps)));
+            for (int f = f0; f <= f1; ++f) {
+              pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * ctx.rig.joint_count]);
+              in_other = std::max(in_other, hand_penetration(ctx.body, pb, kRight, false, true).depth_m);
+            }
+          }
+          const std::string where = rg.name + " shape " + std::to_string(shape) + " level " +
+                                    std::to_string(static_cast<int>(level)) + " contact " +
+                                    std::to_string(static_cast<int>(c));
+          if (shape == 0 && c != Contact::Touch) {
+            EXPECT_LE(in_other * 1000.0f, 5.0f) << where;
+          }
+          EXPECT_LE(in_other * 1000.0f, 6.5f) << where;
+          if (in_other > 0.005f) ++over;
+          worst = std::max(worst, in_other);
+        }
+  }
+  if (rigs.size() == 2) {
+    EXPECT_LE(over, 1);
+  }
+  RecordProperty("hand_in_the_resting_arm_worst_mm", std::to_string(worst * 1000.0f));
+  RecordProperty("hand_in_the_resting_arm_over_5mm", std::to_string(over));
 }
 
 }  // namespace

@@ -1,15 +1,18 @@
 // Motion continuity over the real data (issue 4: continuous positions and velocities): the ASL
 // starter lexicon, both data alphabets as sequences, and every transition between two letters,
 // on the project avatar and on the reference humanoid. No tracked joint (wrists, elbows,
-// ) may move further in one frame than a signing hand ever does, and its per-frame displacement
-// may not change abruptly from one frame to the next (a correction that holds a joint and then
-// lets it go shows up as a spike in this second difference even when the jump itself is under
-// the speed bound). Tracked: wrists and elbows, which the arm IK and the collision corrections
-// move. Fingertips are held only in the transitions from and back to the rest pose: in
-// fingerspelling transitions they reach 11-20 cm/frame (handshape and wrist-twist changes, being
-// reworked in handshape.cpp), a known gap.
+// fingertips) may move further in one frame than a signing hand ever does, and its per-frame
+// displacement may not change abruptly from one frame to the next (a correction that holds a
+// joint and then lets it go shows up as a spike in this second difference even when the jump
+// itself is under the speed bound). Wrists and elbows, which the arm IK and the collision
+// corrections move, are held to both human bounds. Fingertips are held to the speed bound
+// everywhere; their step change is held to the hand's bound only in the transitions from and back
+// to the rest pose, and within signs and fingerspelling to its measured worst (a known gap, see
+// kFingertipBound).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -51,9 +54,14 @@ struct Worst {
   std::string step_what, change_what;
 };
 
-// Tracks the wrists and elbows of both arms (with `tips`, the five fingertips of each hand too)
-// through frames first..last of a clip (last < 0: to its end).
-Worst measure(const Rig& rig, const Clip& clip, int first = 0, int last = -1, bool tips = false) {
+// What `measure` follows: the wrists and elbows of both arms, their fingertips too, or only the
+// fingertips.
+enum class Track { Arms, ArmsAndFingertips, Fingertips };
+
+// Tracks the chosen points of both arms through frames first..last of a clip (last < 0: to its
+// end).
+Worst measure(const Rig& rig, const Clip& clip, int first = 0, int last = -1, Track track = Track::Arms) {
+  const bool arms = track != Track::Fingertips, tips = track != Track::Arms;
   Worst w;
   PoseBuilder pb(rig);
   const int J = rig.joint_count;
@@ -62,8 +70,10 @@ Worst measure(const Rig& rig, const Clip& clip, int first = 0, int last = -1, bo
   std::vector<glm::vec3> prev, cur, prev_step;
   std::vector<std::string> names;
   for (Side s : {kLeft, kRight}) {
-    names.push_back(std::string(side_names[s]) + " wrist");
-    names.push_back(std::string(side_names[s]) + " elbow");
+    if (arms) {
+      names.push_back(std::string(side_names[s]) + " wrist");
+      names.push_back(std::string(side_names[s]) + " elbow");
+    }
     for (int k = 0; tips && k < 5; ++k) names.push_back(std::string(side_names[s]) + " " + finger_names[k] + " tip");
   }
   if (last < 0 || last >= clip.frame_count) last = clip.frame_count - 1;
@@ -71,8 +81,10 @@ Worst measure(const Rig& rig, const Clip& clip, int first = 0, int last = -1, bo
     pb.set_from_local(&clip.rotations[static_cast<size_t>(f) * J]);
     cur.clear();
     for (Side s : {kLeft, kRight}) {
-      cur.push_back(pb.position(rig.arms[s].hand));
-      cur.push_back(pb.position(rig.arms[s].lower));
+      if (arms) {
+        cur.push_back(pb.position(rig.arms[s].hand));
+        cur.push_back(pb.position(rig.arms[s].lower));
+      }
       for (int k = 0; tips && k < 5; ++k) cur.push_back(pb.tip(s, k));
     }
     if (f > first) {
@@ -104,6 +116,14 @@ struct Bound {
   float step_mm = kMaxStepM * 1000.0f, change_mm = kMaxStepChangeM * 1000.0f;
 };
 
+// Fingertips within signs and letters: the speed bound of the hand (their worst step is 74 mm a
+// frame, WALK's fingers), and their step change held to its measured worst, 72 mm, rounded up.
+// That is over the hand's 56 mm: a fingertip 18 cm from the wrist sweeps an arc as the wrist
+// turns (G -> B: 65 mm a frame at the peak, 46 mm of it a change of direction) and the fingers'
+// own flexion adds to it (WALK, PLAY, HOW). Whether a signer's fingertips accelerate that hard is
+// not measured here (no motion-capture data in the sources); the bound keeps it from growing.
+const Bound kFingertipBound{kMaxStepM * 1000.0f, 75.0f};
+
 class MotionSmoothness : public ::testing::TestWithParam<const char*> {
  protected:
   void SetUp() override {
@@ -130,21 +150,18 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
   if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
   Synthesizer synth(avatar_);
   ASSERT_TRUE(synth.ok()) << synth.error();
-  // Known gaps, measured (the worse of the two rigs, rounded up to 10 mm) and held to their own
-  // bounds so they cannot grow unnoticed; every other sign meets the human bounds above.
-  // BOOK (86 mm change on the avatar, 80 on the reference: the palms-up goal keeps the start's
-  // swivel and the hands meet; the per-frame push between them comes on fast); LOOK (61 mm
-  // change on the avatar as the V hand starts forward from the eyes); STUDENT (98 mm step on the
-  // avatar, 66 mm change on the reference: the 180-degree turn from the fingertips on the
-  // forehead to the flat hand pointing forward in one 0.35 s replace); TELL, THANK-YOU (78 mm
-  // step of the elbow on the reference as the movement starts from the chin, 71/94 mm change: a
-  // residual swivel fix of the last ramp round, and the fingers-forward goal solved at the
-  // chin). What fixed the others (BAD, DAY, DEAF, HOSPITAL, LEARN, MORNING came off this list
-  // with swivel continuity and the forearm-carried elbow contact): CHANGELOG.md;
-  // docs/SYNTHESIS.md, known issues.
-  const std::map<std::string, Bound> known = {
-      {"BOOK", {100, 90}},     {"LOOK", {100, 70}},       {"STUDENT", {100, 70}},
-      {"TELL", {100, 80}},     {"THANK-YOU", {100, 100}}};
+  // Known gaps, measured (the worse of the two rigs, rounded up by a few mm) and held to their
+  // own bounds so they cannot grow unnoticed; every other sign meets the human bounds above.
+  // STUDENT (98 mm step on the avatar, 66 mm change on the reference: the 180-degree turn from
+  // the fingertips on the forehead to the flat hand pointing forward in one 0.35 s replace).
+  // What fixed the others (BAD, DAY, DEAF, HOSPITAL, LEARN, MORNING came off this list with
+  // swivel continuity and the forearm-carried elbow contact; BOOK, 86 mm change on the avatar,
+  // with hands parted at a movement's goal; TELL and THANK-YOU, 78 mm elbow steps and 71/94 mm
+  // changes on the reference, with swivel fixes kept to one side from frame to frame, no swivel
+  // fix on a path for a gain under 1 mm, and turns ramped without a kink; LOOK, 61 mm on the
+  // avatar, with pushes ramped in a blended direction): CHANGELOG.md; docs/SYNTHESIS.md, known
+  // issues.
+  const std::map<std::string, Bound> known = {{"STUDENT", {100, 70}}};
   int signs = 0, smooth = 0;
   for (const testing::LexiconSign& sign : testing::lexicon_signs(text)) {
     const std::string& gloss = sign.gloss;
@@ -153,8 +170,14 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
     SynthesisResult r = synth.phrase(t.items, from_key_pose());
     ASSERT_TRUE(r.ok()) << gloss;
     Worst w = measure(rig_, r.clip);
+    // SIGNWEAVE_SMOOTHNESS_REPORT=1 prints every sign's figures (the per-frame clearing is
+    // sensitive: a change is judged on all signs of both rigs, not only the exempted ones).
+    if (std::getenv("SIGNWEAVE_SMOOTHNESS_REPORT"))
+      std::printf("smoothness %s %s %.1f %.1f (%s | %s)\n", GetParam(), gloss.c_str(), w.step_m * 1000.0f,
+                  w.change_m * 1000.0f, w.step_what.c_str(), w.change_what.c_str());
     auto k = known.find(gloss);
     expect_smooth(gloss, w, k == known.end() ? Bound{} : k->second);
+    expect_smooth(gloss + " fingertips", measure(rig_, r.clip, 0, -1, Track::Fingertips), kFingertipBound);
     smooth += w.step_m <= kMaxStepM && w.change_m <= kMaxStepChangeM;
     ++signs;
   }
@@ -188,7 +211,7 @@ TEST_P(MotionSmoothness, RestTransitionsMoveAtHumanSpeed) {
     for (const ClipSegment* seg : {moves.front(), moves.back()}) {
       int first = static_cast<int>(std::lround(seg->start_s * c.fps));
       int last = static_cast<int>(std::lround(seg->end_s * c.fps));
-      Worst w = measure(rig_, c, first, last, true);
+      Worst w = measure(rig_, c, first, last, Track::ArmsAndFingertips);
       const std::string where = sign.gloss + (seg == moves.front() ? " from rest" : " back to rest");
       expect_smooth(where, w, Bound{});
       if (w.step_m > worst.step_m) worst.step_m = w.step_m, worst.step_what = where + ": " + w.step_what;
@@ -225,14 +248,17 @@ TEST_P(MotionSmoothness, AlphabetsAndLetterPairsMoveContinuously) {
     SynthesisResult seq = synth.phrase(letters, from_key_pose());
     ASSERT_TRUE(seq.ok());
     expect_smooth(std::string(lang) + " sequence", measure(rig_, seq.clip), letters_bound);
+    expect_smooth(std::string(lang) + " sequence fingertips", measure(rig_, seq.clip, 0, -1, Track::Fingertips),
+                  kFingertipBound);
     const SynthesisOptions opt = from_key_pose();
     for (size_t a = 0; a < letters.size(); ++a)
       for (size_t b = 0; b < letters.size(); ++b) {
         if (a == b) continue;
         SynthesisResult r = synth.phrase({letters[a], letters[b]}, opt);
         ASSERT_TRUE(r.ok());
-        expect_smooth(std::string(lang) + " " + letters[a].label + " -> " + letters[b].label,
-                      measure(rig_, r.clip), letters_bound);
+        const std::string pair = std::string(lang) + " " + letters[a].label + " -> " + letters[b].label;
+        expect_smooth(pair, measure(rig_, r.clip), letters_bound);
+        expect_smooth(pair + " fingertips", measure(rig_, r.clip, 0, -1, Track::Fingertips), kFingertipBound);
       }
   }
 }
