@@ -407,12 +407,16 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   if (!ctx.options.avoid_collisions || plan.max_penetration_m <= 0.005f) return plan;
   // What the end poses themselves have (a sign's key pose at a known gap): a path is judged by
   // what it adds beyond that, per kind, and one that adds nothing (0.5 mm: sampling) is taken.
+  // The kinds' excesses add up: judged by the larger one, a candidate that took the hands 0.3 mm
+  // less deep into each other while putting the forearms 14.6 mm through each other won (SAD's
+  // and HAVE's hands rising from the rest, thumbs meeting in front of the face: the forearms at
+  // some state counts only, 7-10 mm on the reference humanoid, 5.5 mm on the project avatar).
   const KindDepths from_depths = depths_by_kind(ctx, from, 1, &exempt_from);
   const KindDepths to_depths = depths_by_kind(ctx, to, 1, &exempt_to);
   const float hand_floor_m = std::max(from_depths.hand_m, to_depths.hand_m);
   const float arm_floor_m = std::max(from_depths.arm_m, to_depths.arm_m);
   auto excess_of = [&](const KindDepths& d) {
-    return std::max(std::max(0.0f, d.hand_m - hand_floor_m), std::max(0.0f, d.arm_m - arm_floor_m));
+    return std::max(0.0f, d.hand_m - hand_floor_m) + std::max(0.0f, d.arm_m - arm_floor_m);
   };
   constexpr float kNothingAdded_m = 0.0005f;
   const float direct_excess = excess_of(depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data()));
