@@ -214,6 +214,124 @@ float max_joint_step(const Rig& rig, const glm::quat* from, const glm::quat* to,
   return worst;
 }
 
+// The intended-contact bits of a transition's k-1 states: a hand leaving (arriving at) a contact
+// may touch during the first (last) third (plan_transition's rule).
+std::vector<std::uint8_t> transition_exempt(int k, std::uint8_t exempt_from, std::uint8_t exempt_to) {
+  std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
+  for (int i = 1; i < k; ++i) {
+    const float tau = static_cast<float>(i) / k;
+    if (tau < 0.35f) ex[i - 1] |= exempt_from;
+    if (tau > 0.65f) ex[i - 1] |= exempt_to;
+  }
+  return ex;
+}
+
+// A waypoint on the hand's own path between two poses, a fraction `s` of the way: each arm whose
+// wrist moves is re-solved by the arm IK (with the body model) with its wrist on the straight line
+// between its end positions and the hand turned as the direct slerp turns it there (an orientation
+// the arm reaches on that path; the model-space slerp of the two ends asked for turns beyond the
+// forearm's and wrist's limits on the way up from the rest and the IK's clamped hand flipped 2-3
+// rad between waypoints); every other joint (fingers, an arm that stays) on the direct slerp.
+// `previous`: the same arms at the neighbouring waypoint already solved, which this one continues
+// (swivel and wrist angles, arm_ik.h), or null.
+std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::quat* from, const glm::quat* to,
+                                          float s, std::array<ArmPose, 2>* solved_arms, bool continue_previous) {
+  const Rig& rig = ctx.rig;
+  const int J = rig.joint_count;
+  std::vector<glm::quat> at(J);
+  for (int j = 0; j < J; ++j) at[j] = slerp_shortest(from[j], to[j], s);
+  PoseBuilder pf(rig), pt(rig), pa(rig);
+  pf.set_from_local(from);
+  pt.set_from_local(to);
+  pa.set_from_local(at.data());
+  std::vector<glm::quat> waypoint = at, arm_locals(J);
+  for (int side_index = 0; side_index < 2; ++side_index) {
+    const Side side = static_cast<Side>(side_index);
+    const ArmRig& a = rig.arms[side_index];
+    const glm::vec3 wrist_from = pf.position(a.hand), wrist_to = pt.position(a.hand);
+    // An arm that stays (the other arm at rest) keeps its slerp: 1 cm is below what a frame shows.
+    if (glm::length(wrist_to - wrist_from) < 0.01f) continue;
+    ArmTarget t;
+    t.point = wrist_from + s * (wrist_to - wrist_from);
+    t.contact_offset = glm::vec3(0.0f);
+    t.hand_delta = pa.delta(a.hand);
+    t.body = &ctx.body;
+    ArmPose& arm = (*solved_arms)[side_index];
+    if (continue_previous) {
+      // Wrist angles move at most 0.8 rad from the neighbouring waypoint (a quarter of the way
+      // between them; the wrist's whole flexion range is 2.4 rad), the swivel stays in its basin.
+      t.previous = &arm;
+      t.max_wrist_step_rad = 0.8f;
+      t.has_near_swivel = true;
+      t.near_swivel_rad = arm.swivel_rad;
+    }
+    const ArmPose solved_arm = solve_arm(rig, side, t);
+    arm = solved_arm;
+    PoseBuilder solved(rig);
+    solved.set_from_local(at.data());
+    apply_arm(rig, side, arm, &solved);
+    solved.local_rotations(arm_locals.data());
+    for (int j : {a.shoulder, a.upper, a.lower, a.hand})
+      if (j >= 0) waypoint[j] = arm_locals[j];
+  }
+  return waypoint;
+}
+
+// Waypoints on the hand's path per rest transition: 3 (at a quarter, half, three quarters). ME's
+// raise on the project avatar takes 29 states with 2, 28 with 3, 4 or 5 (46 direct), the
+// lexicon's median no lower with more; each costs an arm solve.
+constexpr int kHandPathWaypoints = 3;
+
+// A rest transition along the hand's path: the direct slerp's joints replaced by a chain through
+// waypoints on the hand's own path (hand_path_waypoint), eq. (10)'s k along the joints' path of
+// that chain, states added where a joint would outrun the minimum-jerk peak (as for the routed
+// chains). The waypoints are solved from the sign's end towards the rest, each continuing from
+// the one before: the key pose's arm is the one to match (the rest's hanging arm is reached from
+// any swivel), and solved from the rest the IK settled on a swivel whose hand flipped on the way
+// up (ME's raise then needed more states than the direct path and was not taken; its lowering,
+// solved from the key pose, 28). Taken (true) only when it needs fewer states than `direct_k`
+// and adds no depth, of either kind, beyond the end poses' own (0.5 mm): otherwise the direct
+// path and its routing stand, so the collision remedies are unchanged wherever the hand's path
+// is not clear.
+bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
+                    std::uint8_t exempt_from, std::uint8_t exempt_to, int direct_k, TransitionPlan* out) {
+  const Rig& rig = ctx.rig;
+  const float fps = ctx.options.fps, speed = ctx.options.speed;
+  std::vector<std::vector<glm::quat>> waypoints(kHandPathWaypoints);
+  std::array<ArmPose, 2> solved_arms;
+  hand_path_waypoint(ctx, from, to, rest_at_start ? 1.0f : 0.0f, &solved_arms, false);  // the key pose's arms
+  for (int i = 0; i < kHandPathWaypoints; ++i) {
+    const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
+    waypoints[w] = hand_path_waypoint(ctx, from, to, static_cast<float>(w + 1) / (kHandPathWaypoints + 1),
+                                      &solved_arms, true);
+  }
+  auto sample = [&](int k, std::vector<glm::quat>* frames) { interpolate_chain(rig, from, to, waypoints, k, frames); };
+  TransitionPlan p;
+  p.lmax_m = path_length(rig, from, to, sample);
+  p.k = transition_states(p.lmax_m, fps, speed);
+  if (p.k >= direct_k) return false;
+  sample(p.k, &p.frames);
+  const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;  // plan_chain's rule
+  const float step_m = max_joint_step(rig, from, to, p.frames, p.k);
+  if (step_m > peak_step_m) {
+    p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
+    if (p.k >= direct_k) return false;
+    sample(p.k, &p.frames);
+  }
+  p.via_points = kHandPathWaypoints;
+  p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
+  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
+  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
+  const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+  constexpr float kNothingAdded_m = 0.0005f;  // plan_transition's: sampling
+  if (d.hand_m > std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m ||
+      d.arm_m > std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m)
+    return false;
+  p.max_penetration_m = std::max(d.hand_m, d.arm_m);
+  *out = std::move(p);
+  return true;
+}
+
 }  // namespace
 
 float transition_path_m(const Rig& rig, const glm::quat* from_locals, const glm::quat* to_locals) {
@@ -230,6 +348,17 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   TransitionPlan plan;
   plan.lmax_m = transition_path_m(rig, from, to);
   plan.k = transition_states(plan.lmax_m, fps, speed);
+  // From and back to the rest pose (every dictionary lookup starts and ends with them), the hand
+  // takes its own, shorter path when that is clear of the body (plan_hand_path). It is judged
+  // against the body model, so only with collision avoidance on.
+  const size_t pose_bytes = sizeof(glm::quat) * static_cast<size_t>(J);
+  const bool has_rest = static_cast<int>(ctx.rest_locals.size()) == J;
+  const bool rest_at_start = has_rest && std::memcmp(from, ctx.rest_locals.data(), pose_bytes) == 0;
+  const bool rest_at_end = has_rest && std::memcmp(to, ctx.rest_locals.data(), pose_bytes) == 0;
+  if (ctx.options.avoid_collisions && rest_at_start != rest_at_end && plan.k > kMinTransitionStates) {
+    TransitionPlan hand_path;
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, plan.k, &hand_path)) return hand_path;
+  }
   interpolate(from, to, {}, J, plan.k, &plan.frames);
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
