@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "math/quat_lanes.h"
 #include "skeleton/humanoid_names.h"
 
 namespace sw::synthesis {
@@ -183,6 +186,19 @@ bool build_rig(const avatar::Avatar& avatar, Rig* rig, std::string* error) {
   return true;
 }
 
+namespace {
+
+// Bitwise equality of two quaternions. Not memcmp: em++ keeps that a libc call per joint, which
+// cost more than it saved; four integer compares inline everywhere.
+inline bool same_bits(const glm::quat& a, const glm::quat& b) {
+  std::uint32_t x[4], y[4];
+  std::memcpy(x, &a, sizeof x);
+  std::memcpy(y, &b, sizeof y);
+  return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | (x[2] ^ y[2]) | (x[3] ^ y[3])) == 0;
+}
+
+}  // namespace
+
 PoseBuilder::PoseBuilder(const Rig& r)
     : rig(&r), delta_(r.joint_count, glm::quat(1, 0, 0, 0)), is_set_(r.joint_count, 0),
       pos_(r.joint_count) {}
@@ -191,10 +207,12 @@ void PoseBuilder::set(int joint, const glm::quat& d) {
   if (joint < 0) return;
   delta_[joint] = d;
   is_set_[joint] = 1;
+  last_local_valid_ = false;
 }
 
 void PoseBuilder::finalize() {
   const Rig& r = *rig;
+  last_local_valid_ = false;
   for (int j = 0; j < r.joint_count; ++j) {
     int p = r.parent[j];
     if (p < 0) {
@@ -208,19 +226,41 @@ void PoseBuilder::finalize() {
 
 void PoseBuilder::set_from_local(const glm::quat* local) {
   const Rig& r = *rig;
+  const int n = r.joint_count;
   std::vector<glm::quat>& model = scratch_;
-  model.resize(r.joint_count);
-  for (int j = 0; j < r.joint_count; ++j) {
+  model.resize(n);
+  last_local_.resize(n);
+  recomputed_.resize(n);
+  const bool incremental = last_local_valid_;
+  for (int j = 0; j < n; ++j) {
     int p = r.parent[j];
-    model[j] = p < 0 ? local[j] : model[p] * local[j];
-    delta_[j] = glm::normalize(model[j] * glm::conjugate(r.bind_rot[j]));
+    // Same local rotation (bitwise: -0 vs +0 or NaNs count as changed) under an unchanged parent:
+    // model rotation, delta and position are what the previous call left.
+    if (incremental && (p < 0 || !recomputed_[p]) &&
+        same_bits(local[j], last_local_[j])) {
+      recomputed_[j] = 0;
+      continue;
+    }
+    recomputed_[j] = 1;
+    last_local_[j] = local[j];
+    // model = model[p] * local; delta = normalize(model * conjugate(bind)); pos = pos[p] +
+    // delta[p] * (bind offset): glm's arithmetic, four lanes at a time (quat_mul above).
+    using namespace math::lanes;
+    const Float4 m = p < 0 ? load4(local[j]) : quat_mul(load4(model[p]), load4(local[j]));
+    store4(&model[j], m);
+    const Float4 conj_bind = quat_conjugate(load4(r.bind_rot[j]));
+    const Float4 d = quat_normalize(quat_mul(m, conj_bind));
+    store4(&delta_[j], d);
     is_set_[j] = 1;
-    pos_[j] = p < 0 ? r.bind_pos[j] : pos_[p] + delta_[p] * (r.bind_pos[j] - r.bind_pos[p]);
+    if (p < 0) {
+      pos_[j] = r.bind_pos[j];
+    } else {
+      const Float4 offset = load3(r.bind_pos[j] - r.bind_pos[p]);
+      const Float4 moved = load3(pos_[p]) + quat_rotate(load4(delta_[p]), offset);
+      pos_[j] = glm::vec3(moved[0], moved[1], moved[2]);
+    }
   }
-}
-
-glm::vec3 PoseBuilder::attached(int joint, const glm::vec3& bind_point) const {
-  return pos_[joint] + delta_[joint] * (bind_point - rig->bind_pos[joint]);
+  last_local_valid_ = true;
 }
 
 glm::vec3 PoseBuilder::tip(Side side, int finger) const {

@@ -67,6 +67,13 @@ int find_canonical_joint(const avatar::Avatar& avatar, const std::string& canoni
 
 // A pose under construction: model-space delta rotations per joint. Unset joints follow their
 // parent (a rigid child). finalize() computes positions and local rotations.
+//
+// set_from_local is incremental: a builder posed from one frame and then from the next (the
+// collision check and the path measurements walk clips frame by frame) recomputes only the joints
+// whose local rotation differs, bit for bit, from the previous frame's, and their descendants.
+// The rest keep their values, which are exactly what recomputing them would give (same inputs,
+// same arithmetic), so the pose is identical to a full pass. set() and finalize() end the
+// incremental run (the next set_from_local is a full pass).
 struct PoseBuilder {
   explicit PoseBuilder(const Rig& rig);
   void set(int joint, const glm::quat& delta);
@@ -75,8 +82,13 @@ struct PoseBuilder {
   void set_from_local(const glm::quat* local);
   const glm::quat& delta(int joint) const { return delta_[joint]; }
   const glm::vec3& position(int joint) const { return pos_[joint]; }
-  // Posed model-space point rigidly attached to `joint`, given in the bind pose.
-  glm::vec3 attached(int joint, const glm::vec3& bind_point) const;
+  // Whether the last set_from_local recomputed `joint` (false: its pose is the previous frame's).
+  bool recomputed(int joint) const { return !last_local_valid_ || recomputed_[joint] != 0; }
+  // Posed model-space point rigidly attached to `joint`, given in the bind pose. Inline: the
+  // collision checks call it a few thousand times per sign.
+  glm::vec3 attached(int joint, const glm::vec3& bind_point) const {
+    return pos_[joint] + delta_[joint] * (bind_point - rig->bind_pos[joint]);
+  }
   glm::vec3 tip(Side side, int finger) const;
   void local_rotations(glm::quat* out) const;  // rig.joint_count entries
 
@@ -86,6 +98,10 @@ struct PoseBuilder {
   std::vector<char> is_set_;
   std::vector<glm::vec3> pos_;
   std::vector<glm::quat> scratch_;  // model rotations for set_from_local (no per-call allocation)
+  // The previous set_from_local input and, per joint, whether that call recomputed it.
+  std::vector<glm::quat> last_local_;
+  std::vector<char> recomputed_;
+  bool last_local_valid_ = false;
 };
 
 // Small vector helpers shared by the solvers. Inline: the arm IK calls them a few dozen times per

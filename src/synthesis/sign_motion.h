@@ -18,6 +18,8 @@
 
 namespace sw::synthesis {
 
+class PenetrationMemo;
+
 // Everything a synthesis run measures once per avatar.
 struct SynthContext {
   const avatar::Avatar* avatar = nullptr;
@@ -25,6 +27,8 @@ struct SynthContext {
   BodyModel body;
   SynthesisOptions options;
   std::vector<glm::quat> rest_locals;  // the rest pose (arms down, hands relaxed)
+  // Optional, per synthesis call: max_penetration's per-frame results (transition.h).
+  PenetrationMemo* penetration_memo = nullptr;
 };
 bool make_context(const avatar::Avatar& avatar, const SynthesisOptions& options, SynthContext* ctx,
                   std::string* error);

@@ -61,6 +61,8 @@ SynthesisResult Synthesizer::phrase(const std::vector<PhraseItem>& items, const 
   // The avatar measurements do not depend on the options: reuse them with this call's options.
   SynthContext ctx = *ctx_;
   ctx.options = options;
+  PenetrationMemo memo(ctx);  // this call's own: the final check reuses the transitions' results
+  ctx.penetration_memo = &memo;
   return run_phrase(ctx, items);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "math/quat_lanes.h"
 #include "synthesis/arm_ik.h"
 #include "synthesis/movement.h"
 
@@ -30,6 +31,7 @@ float max_penetration(const SynthContext& ctx, const glm::quat* frames, int fram
   const Rig& rig = ctx.rig;
   float worst = 0.0f;
   PoseBuilder pb(rig);
+  PenetrationMemo* memo = ctx.penetration_memo;
   for (int f = 0; f < frame_count; ++f) {
     // A held frame repeats the one before (the holds of a sign, a pause): same pose, same
     // depths, and the first occurrence already counted. Posing a frame is most of the check.
@@ -37,28 +39,124 @@ float max_penetration(const SynthContext& ctx, const glm::quat* frames, int fram
     if (f > 0 && exempt[f] == exempt[f - 1] &&
         std::memcmp(frame, frame - rig.joint_count, sizeof(glm::quat) * rig.joint_count) == 0)
       continue;
-    pb.set_from_local(frame);
-    for (int s = 0; s < 2; ++s) {
-      Side side = static_cast<Side>(s);
-      bool trunk = !(exempt[f] & exempt_bit(side, false));
-      bool hands = !(exempt[f] & exempt_bit(side, true)) && !(exempt[f] & exempt_bit(other(side), true));
-      Penetration p = hand_penetration(ctx.body, pb, side, trunk, hands);
-      if (p.depth_m > worst) {
-        worst = p.depth_m;
-        if (what) *what = (side == kLeft ? "left hand in " : "right hand in ") + p.what;
-        if (worst_frame) *worst_frame = f;
+    // The frame's deepest check, first in the order below on a tie: over the frames, the first
+    // frame's deepest is then the first of all checks that reaches the maximum, as when every
+    // check is compared with the running worst.
+    const PenetrationMemo::Result* known = memo ? memo->find(frame, exempt[f]) : nullptr;
+    PenetrationMemo::Result here;
+    if (!known) {
+      pb.set_from_local(frame);
+      for (int s = 0; s < 2; ++s) {
+        Side side = static_cast<Side>(s);
+        bool trunk = !(exempt[f] & exempt_bit(side, false));
+        bool hands = !(exempt[f] & exempt_bit(side, true)) && !(exempt[f] & exempt_bit(other(side), true));
+        Penetration p = hand_penetration(ctx.body, pb, side, trunk, hands);
+        if (p.depth_m > here.depth_m) {
+          here.depth_m = p.depth_m;
+          here.what = (side == kLeft ? "left hand in " : "right hand in ") + p.what;
+        }
+        // The arm: always against the trunk (a hand's intended touch lets only the forearm's wrist
+        // end rest on the body), its forearm against the other one unless the hands touch.
+        Penetration arm = arm_penetration(ctx.body, pb, side, true, !trunk, hands && s == 0);
+        if (arm.depth_m > here.depth_m) {
+          here.depth_m = arm.depth_m;
+          here.what = std::move(arm.what);
+        }
       }
-      // The arm: always against the trunk (a hand's intended touch lets only the forearm's wrist
-      // end rest on the body), its forearm against the other one unless the hands touch.
-      Penetration arm = arm_penetration(ctx.body, pb, side, true, !trunk, hands && s == 0);
-      if (arm.depth_m > worst) {
-        worst = arm.depth_m;
-        if (what) *what = arm.what;
-        if (worst_frame) *worst_frame = f;
-      }
+      known = &here;
     }
+    if (known->depth_m > worst) {
+      worst = known->depth_m;
+      if (what) *what = known->what;
+      if (worst_frame) *worst_frame = f;
+    }
+    if (memo && known == &here) memo->add(frame, exempt[f], std::move(here));
   }
   return worst;
+}
+
+PenetrationMemo::PenetrationMemo(const SynthContext& ctx) : table_(1024, -1) {
+  const Rig& rig = ctx.rig;
+  std::vector<char> mark(static_cast<size_t>(rig.joint_count), 0);
+  auto reads = [&](int j) {
+    for (; j >= 0 && j < rig.joint_count && !mark[j]; j = rig.parent[j]) mark[j] = 1;
+  };
+  for (const ArmRig& a : rig.arms) {
+    for (int j : {a.shoulder, a.upper, a.lower, a.hand}) reads(j);
+    for (const FingerChain& c : a.fingers) {
+      for (int j : c.bones) reads(j);
+      reads(c.tip);
+    }
+  }
+  for (const Capsule& c : ctx.body.trunk) reads(c.joint);
+  for (int s = 0; s < 2; ++s) {
+    reads(ctx.body.upper_arm[s].joint);
+    reads(ctx.body.forearm[s].joint);
+  }
+  for (int j = 0; j < rig.joint_count; ++j)
+    if (mark[j]) joints_.push_back(j);
+  for (const ArmRig& a : rig.arms)
+    for (int j : {a.upper, a.lower, a.hand})
+      if (j >= 0 && j < rig.joint_count) hash_joints_.push_back(j);
+}
+
+std::uint32_t PenetrationMemo::key_hash(const glm::quat* frame, std::uint8_t exempt) const {
+  // FNV-1a over the arm joints' bits only: they move on every frame of a transition, so they tell
+  // frames apart; same() compares the whole key.
+  std::uint32_t h = 2166136261u ^ exempt;
+  for (int j : hash_joints_) {
+    std::uint32_t w[4];
+    std::memcpy(w, &frame[j], sizeof w);
+    for (std::uint32_t x : w) h = (h ^ x) * 16777619u;
+  }
+  return h;
+}
+
+bool PenetrationMemo::same(size_t entry, const glm::quat* frame, std::uint8_t exempt) const {
+  if (exempt_[entry] != exempt) return false;
+  const std::uint32_t* key = &keys_[entry * 4 * joints_.size()];
+  std::uint32_t differ = 0;
+  for (size_t i = 0; i < joints_.size(); ++i, key += 4) {
+    std::uint32_t w[4];
+    std::memcpy(w, &frame[joints_[i]], sizeof w);
+    differ |= (w[0] ^ key[0]) | (w[1] ^ key[1]) | (w[2] ^ key[2]) | (w[3] ^ key[3]);
+  }
+  return differ == 0;
+}
+
+const PenetrationMemo::Result* PenetrationMemo::find(const glm::quat* frame, std::uint8_t exempt) const {
+  const std::uint32_t h = key_hash(frame, exempt);
+  const size_t mask = table_.size() - 1;
+  for (size_t i = h & mask;; i = (i + 1) & mask) {
+    const std::int32_t e = table_[i];
+    if (e < 0) return nullptr;
+    if (hashes_[static_cast<size_t>(e)] == h && same(static_cast<size_t>(e), frame, exempt))
+      return &results_[static_cast<size_t>(e)];
+  }
+}
+
+void PenetrationMemo::add(const glm::quat* frame, std::uint8_t exempt, Result result) {
+  if (2 * (results_.size() + 1) > table_.size()) {  // keep the table at most half full
+    std::vector<std::int32_t> bigger(2 * table_.size(), -1);
+    const size_t mask = bigger.size() - 1;
+    for (size_t e = 0; e < hashes_.size(); ++e) {
+      size_t i = hashes_[e] & mask;
+      while (bigger[i] >= 0) i = (i + 1) & mask;
+      bigger[i] = static_cast<std::int32_t>(e);
+    }
+    table_.swap(bigger);
+  }
+  const std::uint32_t h = key_hash(frame, exempt);
+  const size_t mask = table_.size() - 1;
+  size_t i = h & mask;
+  while (table_[i] >= 0) i = (i + 1) & mask;
+  table_[i] = static_cast<std::int32_t>(results_.size());
+  const size_t at = keys_.size();
+  keys_.resize(at + 4 * joints_.size());
+  for (size_t k = 0; k < joints_.size(); ++k) std::memcpy(&keys_[at + 4 * k], &frame[joints_[k]], sizeof(glm::quat));
+  exempt_.push_back(exempt);
+  hashes_.push_back(h);
+  results_.push_back(std::move(result));
 }
 
 namespace {
@@ -83,8 +181,66 @@ float via_weight(const std::vector<Via>& vias, size_t v, float tau) {
   return w * w;
 }
 
+// One joint's shortest-path slerp from a to b (slerp_shortest, rig.cpp) worked out once for every
+// sample of a path: the hemisphere flip, the angle and its sine do not depend on t, so they are
+// computed once instead of per sample (an acos and a sin per joint per frame). Each sample is the
+// same arithmetic on the same values as slerp_shortest(a, b, t), glm's quaternion sums and
+// normalisation done four lanes at a time (math/quat_lanes.h): bit-identical.
+struct JointSlerp {
+  math::lanes::Float4 a, b, diff;  // b flipped into a's hemisphere; diff = b - a for the nlerp branch
+  float theta = 0.0f, sin_theta = 0.0f;
+  bool nlerp = true;
+  // a and b the same bits (and finite): diff is +0, so a + t * diff is the same for every t >= 0
+  // (minimum_jerk never goes below 0) and one sample serves the whole path.
+  bool constant = false;
+  JointSlerp(const glm::quat& a_in, const glm::quat& b_in) {
+    glm::quat bq = b_in;
+    float d = glm::dot(a_in, bq);
+    if (d < 0.0f) {
+      bq = -bq;
+      d = -d;
+    }
+    a = math::lanes::load4(a_in);
+    b = math::lanes::load4(bq);
+    nlerp = d > 0.9995f;
+    if (nlerp) {
+      diff = math::lanes::load4(bq - a_in);
+      constant = std::memcmp(&a_in, &b_in, sizeof(glm::quat)) == 0 && std::isfinite(a_in.w) &&
+                 std::isfinite(a_in.x) && std::isfinite(a_in.y) && std::isfinite(a_in.z);
+    } else {
+      theta = std::acos(std::min(d, 1.0f));
+      sin_theta = std::sin(theta);
+    }
+  }
+  // slerp_shortest's normalize(a + t * (b - a)) or normalize(wa * a + wb * b).
+  math::lanes::Float4 at(float t) const {
+    if (nlerp) return math::lanes::quat_normalize(a + diff * t);
+    float wa = std::sin((1.0f - t) * theta) / sin_theta, wb = std::sin(t * theta) / sin_theta;
+    return math::lanes::quat_normalize(a * wa + b * wb);
+  }
+};
+
+// interpolate() without via-poses (the direct transition and its path measurement): the same
+// frames, each joint's slerp set up once for all of them (JointSlerp).
+void interpolate_direct(const glm::quat* a, const glm::quat* b, int joints, int k, std::vector<glm::quat>* out) {
+  out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
+  std::vector<JointSlerp> path;
+  path.reserve(static_cast<size_t>(joints));
+  for (int j = 0; j < joints; ++j) path.emplace_back(a[j], b[j]);
+  for (int i = 1; i < k; ++i) {
+    float e = minimum_jerk(static_cast<float>(i) / k);
+    glm::quat* row = &(*out)[static_cast<size_t>(i - 1) * joints];
+    const glm::quat* first = out->data();
+    for (int j = 0; j < joints; ++j) {
+      if (i > 1 && path[j].constant) row[j] = first[j];
+      else math::lanes::store4(&row[j], math::lanes::quat_normalize(path[j].at(e)));
+    }
+  }
+}
+
 void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>& vias, int joints, int k,
                  std::vector<glm::quat>* out) {
+  if (vias.empty()) return interpolate_direct(a, b, joints, k, out);
   out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
   std::vector<float> w(vias.size());
   for (int i = 1; i < k; ++i) {
@@ -153,16 +309,19 @@ float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sample
   std::vector<glm::quat> samples;
   sample(kPathSamples, &samples);
   PoseBuilder pb(rig);
-  std::vector<glm::vec3> prev(J), cur(J);
+  std::vector<glm::vec3> prev(J);
   std::vector<float> length(J, 0.0f);
   for (int i = 0; i <= kPathSamples; ++i) {
     const glm::quat* frame = i == 0 ? a : i == kPathSamples ? b : &samples[static_cast<size_t>(i - 1) * J];
     pb.set_from_local(frame);
     for (int j = 0; j < J; ++j) {
-      cur[j] = pb.position(j);
-      if (i > 0) length[j] += glm::length(cur[j] - prev[j]);
+      // A joint the incremental pose left alone has not moved: its chord is exactly 0 and adding
+      // it would leave the sum as it is.
+      if (i > 0 && !pb.recomputed(j)) continue;
+      const glm::vec3& cur = pb.position(j);
+      if (i > 0) length[j] += glm::length(cur - prev[j]);
+      prev[j] = cur;
     }
-    std::swap(prev, cur);
   }
   return J > 0 ? *std::max_element(length.begin(), length.end()) : 0.0f;
 }

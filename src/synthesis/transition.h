@@ -62,7 +62,40 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
                                std::uint8_t exempt_from, std::uint8_t exempt_to);
 
 // Deepest unintended penetration over frames (exempt bits as in sign_motion.h); `what` names it.
+// With ctx.penetration_memo set, frames it has seen are not posed and tested again.
 float max_penetration(const SynthContext& ctx, const glm::quat* frames, int frame_count,
                       const std::uint8_t* exempt, std::string* what, int* worst_frame);
+
+// max_penetration's result for each frame it has checked, found again by the frame's bits. A
+// phrase checks its transition frames while planning them and then the whole clip once more
+// (after the face layer): most frames of the final check are transition frames seen before.
+// A frame is known by the local rotations of the joints the checks read (arms, hands, fingers,
+// the capsules' joints) and of their ancestors, and by its exemption bits: the depths are a
+// function of exactly those, so a remembered result is the one a new check would compute, to the
+// bit. The other joints (eyes, which the face layer turns on every frame, jaw, legs) are not
+// part of the key. One memo per synthesis call (not shared between threads).
+class PenetrationMemo {
+ public:
+  explicit PenetrationMemo(const SynthContext& ctx);
+  // A frame's deepest penetration (0 if none) and what it was, in max_penetration's terms.
+  struct Result {
+    float depth_m = 0.0f;
+    std::string what;
+  };
+  const Result* find(const glm::quat* frame, std::uint8_t exempt) const;
+  // A frame find() did not know.
+  void add(const glm::quat* frame, std::uint8_t exempt, Result result);
+
+ private:
+  std::uint32_t key_hash(const glm::quat* frame, std::uint8_t exempt) const;
+  bool same(size_t entry, const glm::quat* frame, std::uint8_t exempt) const;
+  std::vector<int> joints_;          // the key's joints
+  std::vector<int> hash_joints_;     // the arms' upper, lower and hand joints
+  std::vector<std::uint32_t> keys_;  // the key joints' rotation bits, 4 words each, per entry
+  std::vector<std::uint8_t> exempt_;
+  std::vector<Result> results_;
+  std::vector<std::uint32_t> hashes_;
+  std::vector<std::int32_t> table_;  // open addressing: entry index or -1; size a power of two
+};
 
 }  // namespace sw::synthesis

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <tuple>
 
 #include "synthesis_fixture.h"
 
@@ -189,6 +190,72 @@ TEST(SynthesisTransition, RestTransitionsTakeTheHandsShortPath) {
     EXPECT_LE(median_s, 1.0) << rig_name << ": median rest transition";
     RecordProperty(rig_name + "_median_rest_transition_s", std::to_string(median_s));
   }
+}
+
+// The final check of a phrase takes the frames the transitions already checked from the memo
+// (transition.h): what it reports must be what checking them again reports — the same depth, the
+// same name, the same frame — also when the face layer has turned only the eyes, and a frame it
+// has not seen (or the same frame with other exemptions) must be checked, not looked up.
+TEST(SynthesisTransition, PenetrationMemoGivesWhatTheChecksGive) {
+  avatar::Avatar av = make_reference_humanoid();
+  SynthContext ctx;
+  std::string error;
+  ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
+  const int J = ctx.rig.joint_count;
+  // The palm on the chest with the fingers pointing into it (SynthesisCollision's case): without
+  // the exemption of the intended contact, its frames penetrate.
+  notation::SignSpec s = sign_at(flat(), BodyLevel::Chest, Side::Centre, Contact::Touch);
+  s.dominant.orientation.extended_finger = {0, 0, -1};
+  s.dominant.orientation.palm = {0, -1, 0};
+  s.dominant.location.contact_part = notation::HandPlace::Palm;
+  SynthesisOptions off;
+  off.avoid_collisions = false;
+  SynthesisResult r = synthesize_sign(s, av, off);
+  ASSERT_TRUE(r.ok());
+  std::vector<glm::quat> frames = r.clip.rotations;
+  const int n = r.clip.frame_count;
+  const std::vector<std::uint8_t> none(static_cast<size_t>(n), 0);
+  const std::vector<std::uint8_t>& intended = r.report.intended_contact;
+  auto check = [&](const SynthContext& c, const std::vector<glm::quat>& f, const std::vector<std::uint8_t>& ex) {
+    std::string what;
+    int frame = -1;
+    float depth = max_penetration(c, f.data(), n, ex.data(), &what, &frame);
+    return std::make_tuple(depth, what, frame);
+  };
+  const auto plain = check(ctx, frames, none);
+  ASSERT_GT(std::get<0>(plain), 0.005f);
+  ASSERT_FALSE(std::get<1>(plain).empty());
+
+  SynthContext with_memo = ctx;
+  PenetrationMemo memo(with_memo);
+  with_memo.penetration_memo = &memo;
+  EXPECT_EQ(check(with_memo, frames, none), plain);  // fills the memo
+  EXPECT_EQ(check(with_memo, frames, none), plain);  // every frame from the memo
+
+  // Other exemptions: the intended contact is exempt, so the depth is smaller.
+  const auto exempt_plain = check(ctx, frames, intended);
+  EXPECT_LT(std::get<0>(exempt_plain), std::get<0>(plain));
+  EXPECT_EQ(check(with_memo, frames, intended), exempt_plain);
+
+  // The eyes turned on every frame: not part of what the checks read.
+  std::vector<glm::quat> eyes = frames;
+  int turned = 0;
+  for (int j = 0; j < J; ++j) {
+    if (ctx.rig.names[j] != "leftEye" && ctx.rig.names[j] != "rightEye") continue;
+    for (int f = 0; f < n; ++f) eyes[static_cast<size_t>(f) * J + j] *= axis_angle(glm::vec3(0, 1, 0), 0.01f * (f + 1));
+    ++turned;
+  }
+  EXPECT_EQ(turned, 2);
+  EXPECT_EQ(check(with_memo, eyes, none), plain);
+
+  // The right hand turned on the deepest frame: a new frame, checked (the memo would give the old
+  // frame's depth).
+  std::vector<glm::quat> moved = frames;
+  const int worst = std::get<2>(plain);
+  const int hand = ctx.rig.arms[kRight].hand;
+  moved[static_cast<size_t>(worst) * J + hand] *= axis_angle(glm::vec3(1, 0, 0), 0.4f);
+  const auto moved_plain = check(ctx, moved, none);
+  EXPECT_EQ(check(with_memo, moved, none), moved_plain);
 }
 
 }  // namespace
