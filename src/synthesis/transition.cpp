@@ -492,6 +492,8 @@ class HandChain {
     for (const ArmRig& a : rig.arms)
       for (int j : {a.shoulder, a.upper, a.lower, a.hand})
         if (j >= 0) arm_joint_[static_cast<size_t>(j)] = true;
+    direct_.reserve(static_cast<size_t>(rig.joint_count));
+    for (int j = 0; j < rig.joint_count; ++j) direct_.emplace_back(from[j], to[j]);
   }
   // The k-1 intermediate states (interpolate_chain's form).
   void sample(int k, std::vector<glm::quat>* out) const {
@@ -515,7 +517,7 @@ class HandChain {
       glm::quat* state = &(*out)[static_cast<size_t>(i - 1) * J];
       for (int j = 0; j < J; ++j) {
         if (!arm_joint_[static_cast<size_t>(j)]) {
-          state[j] = slerp_shortest(from_[j], to_[j], s);
+          math::lanes::store4(&state[j], direct_[static_cast<size_t>(j)].at(s));
           continue;
         }
         const glm::quat q = knot ? slerp_shortest(piece(knot - 1, j, e), piece(knot, j, e), fade) : piece(seg, j, e);
@@ -530,6 +532,7 @@ class HandChain {
   std::vector<const glm::quat*> knots_;
   std::vector<float> s_, u_, half_;
   std::vector<bool> arm_joint_;
+  std::vector<JointSlerp> direct_;  // each joint's direct slerp, set up once
 };
 
 // A rest transition along the hand's path: the direct slerp's joints replaced by a chain through
@@ -566,11 +569,15 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   if (p.k >= direct_k) return false;
   // One pass over the states: the longest joint step of a frame (plan_chain's peak rule) and
   // the depths of each kind (depths_by_kind's measure).
+  // Each state's deepest check in max_penetration's terms, for the memo of the phrase's final
+  // check (PenetrationMemo), which would otherwise pose and check these states again.
+  std::vector<PenetrationMemo::Result> deepest;
   auto measure = [&](float* step_m, KindDepths* d) {
     PoseBuilder pb(rig);
     std::vector<glm::vec3> prev(J), cur(J);
     *step_m = 0.0f;
     *d = KindDepths{};
+    deepest.assign(static_cast<size_t>(std::max(0, p.k - 1)), PenetrationMemo::Result{});
     for (int i = 0; i <= p.k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p.k ? to : &p.frames[static_cast<size_t>(i - 1) * J]);
       for (int j = 0; j < J; ++j) {
@@ -584,8 +591,19 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
         const Side side = static_cast<Side>(side_index);
         const bool trunk = !(ex & exempt_bit(side, false));
         const bool hands = !(ex & exempt_bit(side, true)) && !(ex & exempt_bit(other(side), true));
-        d->hand_m = std::max(d->hand_m, hand_penetration(ctx.body, pb, side, trunk, hands).depth_m);
-        d->arm_m = std::max(d->arm_m, arm_penetration(ctx.body, pb, side, true, !trunk, hands && side_index == 0).depth_m);
+        Penetration hand = hand_penetration(ctx.body, pb, side, trunk, hands);
+        Penetration arm = arm_penetration(ctx.body, pb, side, true, !trunk, hands && side_index == 0);
+        d->hand_m = std::max(d->hand_m, hand.depth_m);
+        d->arm_m = std::max(d->arm_m, arm.depth_m);
+        PenetrationMemo::Result& r = deepest[static_cast<size_t>(i - 1)];
+        if (hand.depth_m > r.depth_m) {
+          r.depth_m = hand.depth_m;
+          r.what = (side == kLeft ? "left hand in " : "right hand in ") + hand.what;
+        }
+        if (arm.depth_m > r.depth_m) {
+          r.depth_m = arm.depth_m;
+          r.what = std::move(arm.what);
+        }
       }
     }
   };
@@ -610,6 +628,12 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
       d.arm_m > std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m)
     return false;
   p.max_penetration_m = std::max(d.hand_m, d.arm_m);
+  if (PenetrationMemo* memo = ctx.penetration_memo)
+    for (int i = 0; i + 1 < p.k; ++i) {
+      const glm::quat* frame = &p.frames[static_cast<size_t>(i) * J];
+      const std::uint8_t ex = p.exempt[static_cast<size_t>(i)];
+      if (!memo->find(frame, ex)) memo->add(frame, ex, std::move(deepest[static_cast<size_t>(i)]));
+    }
   *out = std::move(p);
   return true;
 }
