@@ -476,7 +476,7 @@ class HandChain {
  public:
   HandChain(const Rig& rig, const glm::quat* from, const glm::quat* to,
             const std::vector<std::vector<glm::quat>>& waypoints, const std::vector<float>& fractions)
-      : rig_(rig), from_(from), to_(to), s_{0.0f} {
+      : rig_(rig), s_{0.0f} {
     knots_.push_back(from);
     for (const auto& w : waypoints) knots_.push_back(w.data());
     knots_.push_back(to);
@@ -528,7 +528,6 @@ class HandChain {
 
  private:
   const Rig& rig_;
-  const glm::quat *from_, *to_;
   std::vector<const glm::quat*> knots_;
   std::vector<float> s_, u_, half_;
   std::vector<bool> arm_joint_;
