@@ -373,6 +373,270 @@ float max_joint_step(const Rig& rig, const glm::quat* from, const glm::quat* to,
   return worst;
 }
 
+// The intended-contact bits of a transition's k-1 states: a hand leaving (arriving at) a contact
+// may touch during the first (last) third (plan_transition's rule).
+std::vector<std::uint8_t> transition_exempt(int k, std::uint8_t exempt_from, std::uint8_t exempt_to) {
+  std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
+  for (int i = 1; i < k; ++i) {
+    const float tau = static_cast<float>(i) / k;
+    if (tau < 0.35f) ex[i - 1] |= exempt_from;
+    if (tau > 0.65f) ex[i - 1] |= exempt_to;
+  }
+  return ex;
+}
+
+// The hand's path leaves the hanging rest forward, off the thigh: the wrist's straight line bowed
+// forward by this much at its middle (a sine over the way). Straight, the forearm grazed the
+// trunk on the way up to the shoulder and the chin (4-7 mm on the project avatar), and those
+// rest transitions fell back to the direct path.
+constexpr float kHandPathForwardBow_m = 0.05f;
+
+// The elbow's swivel in a posed arm, in solve_arm's convention (arm_ik.cpp solve_chain): the
+// angle of the elbow about the shoulder-wrist axis, 0 with the elbow down, positive out to the
+// arm's side.
+float pose_swivel(const Rig& rig, Side side, const PoseBuilder& pose) {
+  const ArmRig& a = rig.arms[side];
+  const glm::vec3 shoulder = pose.position(a.upper);
+  const glm::vec3 axis = safe_normalize(pose.position(a.hand) - shoulder, rig.forward);
+  const glm::vec3 out_dir = side == kLeft ? rig.left : -rig.left;
+  glm::vec3 down = reject(-rig.up, axis);
+  if (glm::length(down) < 1e-3f) down = reject(-rig.forward, axis);
+  down = glm::normalize(down);
+  const glm::vec3 outp = safe_normalize(reject(reject(out_dir, axis), down), glm::cross(axis, down));
+  const glm::vec3 elbow = reject(pose.position(a.lower) - shoulder, axis);
+  return std::atan2(glm::dot(elbow, outp), glm::dot(elbow, down));
+}
+
+// A waypoint on the hand's own path between two poses (pf, pt: them posed), a fraction `s` of the way: each arm whose
+// wrist moves is re-solved by the arm IK with its wrist on the straight line between its end
+// positions, its elbow swivel interpolated between the ends' and the hand turned as the direct
+// slerp turns it there (an orientation the arm reaches on that path; the model-space slerp of the
+// two ends asked for turns beyond the forearm's and wrist's limits on the way up from the rest and
+// the IK's clamped hand flipped 2-3 rad between waypoints); every other joint (fingers, an arm
+// that stays) on the direct slerp. The swivel is given, not searched: the search (12 or more arm
+// solves a waypoint) made a dictionary look-up 65% slower, and the path is checked against the
+// body afterwards anyway (plan_hand_path). `previous`: the same arms at the neighbouring waypoint
+// already solved, whose wrist angles this one continues (arm_ik.h), or none yet.
+std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::quat* from, const glm::quat* to,
+                                          const PoseBuilder& pf, const PoseBuilder& pt, float s,
+                                          std::array<ArmPose, 2>* previous, bool has_previous) {
+  const Rig& rig = ctx.rig;
+  const int J = rig.joint_count;
+  std::vector<glm::quat> at(J);
+  for (int j = 0; j < J; ++j) at[j] = slerp_shortest(from[j], to[j], s);
+  PoseBuilder pa(rig);
+  pa.set_from_local(at.data());
+  std::vector<glm::quat> waypoint = at, arm_locals(J);
+  for (int side_index = 0; side_index < 2; ++side_index) {
+    const Side side = static_cast<Side>(side_index);
+    const ArmRig& a = rig.arms[side_index];
+    const glm::vec3 wrist_from = pf.position(a.hand), wrist_to = pt.position(a.hand);
+    // An arm that stays (the other arm at rest) keeps its slerp: 1 cm is below what a frame shows.
+    if (glm::length(wrist_to - wrist_from) < 0.01f) continue;
+    ArmTarget t;
+    t.point = wrist_from + s * (wrist_to - wrist_from) + kHandPathForwardBow_m * std::sin(3.14159265f * s) * rig.forward;
+    t.contact_offset = glm::vec3(0.0f);
+    t.hand_delta = pa.delta(a.hand);
+    t.auto_swivel = false;
+    const float swivel_from = pose_swivel(rig, side, pf);
+    float turn = pose_swivel(rig, side, pt) - swivel_from;  // the shorter way round
+    if (turn > 3.14159265f) turn -= 6.28318531f;
+    if (turn < -3.14159265f) turn += 6.28318531f;
+    t.swivel_rad = swivel_from + s * turn;
+    ArmPose& arm = (*previous)[side_index];
+    if (has_previous) {
+      // Wrist angles move at most 0.8 rad from the neighbouring waypoint (a quarter of the way
+      // between them; the wrist's whole flexion range is 2.4 rad).
+      t.previous = &arm;
+      t.max_wrist_step_rad = 0.8f;
+    }
+    arm = solve_arm(rig, side, t);
+    PoseBuilder solved(rig);
+    solved.set_from_local(at.data());
+    apply_arm(rig, side, arm, &solved);
+    solved.local_rotations(arm_locals.data());
+    for (int j : {a.shoulder, a.upper, a.lower, a.hand})
+      if (j >= 0) waypoint[j] = arm_locals[j];
+  }
+  return waypoint;
+}
+
+// Waypoints on the hand's path per rest transition: 3 (at a quarter, half, three quarters). ME's
+// raise on the project avatar takes 29 states with 2, 28 with 3, 4 or 5 (46 direct), the
+// lexicon's median no lower with more; each costs an arm solve.
+constexpr int kHandPathWaypoints = 3;
+
+// interpolate_chain's path through the hand-path waypoints, computed for what differs: the
+// waypoints differ from the direct slerp only in the arm joints (shoulder, upper arm, forearm,
+// hand), so every other joint's pieces lie on its one slerp arc from `from` to `to`, and a piece
+// or the cross-fade of two is that arc at a mixed fraction: one slerp a joint, as on the direct
+// path, instead of two or three (sampling the chain whole made a dictionary look-up 40% slower).
+// The knots' shares of the path are measured once.
+class HandChain {
+ public:
+  HandChain(const Rig& rig, const glm::quat* from, const glm::quat* to,
+            const std::vector<std::vector<glm::quat>>& waypoints, const std::vector<float>& fractions)
+      : rig_(rig), s_{0.0f} {
+    knots_.push_back(from);
+    for (const auto& w : waypoints) knots_.push_back(w.data());
+    knots_.push_back(to);
+    s_.insert(s_.end(), fractions.begin(), fractions.end());
+    s_.push_back(1.0f);
+    u_.push_back(0.0f);
+    for (size_t i = 1; i < knots_.size(); ++i)
+      u_.push_back(u_.back() + transition_lmax(rig, knots_[i - 1], knots_[i]) + 1e-6f);
+    for (float& x : u_) x /= u_.back();
+    half_.assign(knots_.size(), 0.0f);
+    for (size_t i = 1; i + 1 < knots_.size(); ++i) half_[i] = 0.45f * std::min(u_[i] - u_[i - 1], u_[i + 1] - u_[i]);
+    arm_joint_.assign(static_cast<size_t>(rig.joint_count), false);
+    for (const ArmRig& a : rig.arms)
+      for (int j : {a.shoulder, a.upper, a.lower, a.hand})
+        if (j >= 0) arm_joint_[static_cast<size_t>(j)] = true;
+    direct_.reserve(static_cast<size_t>(rig.joint_count));
+    for (int j = 0; j < rig.joint_count; ++j) direct_.emplace_back(from[j], to[j]);
+  }
+  // The k-1 intermediate states (interpolate_chain's form).
+  void sample(int k, std::vector<glm::quat>* out) const {
+    const int J = rig_.joint_count;
+    const size_t pieces = knots_.size() - 1;
+    auto piece = [&](size_t p, int j, float e) {
+      return slerp_shortest(knots_[p][j], knots_[p + 1][j], (e - u_[p]) / (u_[p + 1] - u_[p]));
+    };
+    auto fraction = [&](size_t p, float e) { return s_[p] + (e - u_[p]) / (u_[p + 1] - u_[p]) * (s_[p + 1] - s_[p]); };
+    out->resize(static_cast<size_t>(std::max(0, k - 1)) * J);
+    for (int i = 1; i < k; ++i) {
+      const float e = minimum_jerk(static_cast<float>(i) / k);
+      size_t seg = 0;
+      while (seg + 1 < pieces && e > u_[seg + 1]) ++seg;
+      size_t knot = 0;
+      for (size_t n = 1; n < pieces; ++n)
+        if (std::fabs(e - u_[n]) < half_[n]) knot = n;
+      const float x = knot ? (e - (u_[knot] - half_[knot])) / (2.0f * half_[knot]) : 0.0f;
+      const float fade = x * x * (3.0f - 2.0f * x);
+      const float s = knot ? fraction(knot - 1, e) + fade * (fraction(knot, e) - fraction(knot - 1, e)) : fraction(seg, e);
+      glm::quat* state = &(*out)[static_cast<size_t>(i - 1) * J];
+      for (int j = 0; j < J; ++j) {
+        if (!arm_joint_[static_cast<size_t>(j)]) {
+          math::lanes::store4(&state[j], direct_[static_cast<size_t>(j)].at(s));
+          continue;
+        }
+        const glm::quat q = knot ? slerp_shortest(piece(knot - 1, j, e), piece(knot, j, e), fade) : piece(seg, j, e);
+        state[j] = glm::normalize(q);
+      }
+    }
+  }
+
+ private:
+  const Rig& rig_;
+  std::vector<const glm::quat*> knots_;
+  std::vector<float> s_, u_, half_;
+  std::vector<bool> arm_joint_;
+  std::vector<JointSlerp> direct_;  // each joint's direct slerp, set up once
+};
+
+// A rest transition along the hand's path: the direct slerp's joints replaced by a chain through
+// waypoints on the hand's own path (hand_path_waypoint), eq. (10)'s k along the joints' path of
+// that chain, states added where a joint would outrun the minimum-jerk peak (as for the routed
+// chains). The waypoints are solved from the sign's end towards the rest, each continuing from
+// the one before: the key pose's arm is the one to match (the rest's hanging arm is reached from
+// any swivel), and solved from the rest the IK's wrist flipped on the way up (ME's raise then
+// needed more states than the direct path and was not taken; its lowering, solved from the key
+// pose, 28). Taken (true) only when it needs fewer states than `direct_k` and adds no depth, of
+// either kind, beyond the end poses' own (0.5 mm): otherwise the direct path and its routing
+// stand, so the collision remedies are unchanged wherever the hand's path is not clear.
+bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
+                    std::uint8_t exempt_from, std::uint8_t exempt_to, int direct_k, TransitionPlan* out) {
+  const Rig& rig = ctx.rig;
+  const int J = rig.joint_count;
+  const float fps = ctx.options.fps, speed = ctx.options.speed;
+  std::vector<std::vector<glm::quat>> waypoints(kHandPathWaypoints);
+  std::vector<float> fractions(kHandPathWaypoints);
+  std::array<ArmPose, 2> solved_arms;
+  PoseBuilder pf(rig), pt(rig);
+  pf.set_from_local(from);
+  pt.set_from_local(to);
+  for (int i = 0; i < kHandPathWaypoints; ++i) {
+    const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
+    fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
+    waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0);
+  }
+  const HandChain chain(rig, from, to, waypoints, fractions);
+  auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
+  TransitionPlan p;
+  p.lmax_m = path_length(rig, from, to, sample);
+  p.k = transition_states(p.lmax_m, fps, speed);
+  if (p.k >= direct_k) return false;
+  // One pass over the states: the longest joint step of a frame (plan_chain's peak rule) and
+  // the depths of each kind (depths_by_kind's measure).
+  // Each state's deepest check in max_penetration's terms, for the memo of the phrase's final
+  // check (PenetrationMemo), which would otherwise pose and check these states again.
+  std::vector<PenetrationMemo::Result> deepest;
+  auto measure = [&](float* step_m, KindDepths* d) {
+    PoseBuilder pb(rig);
+    std::vector<glm::vec3> prev(J), cur(J);
+    *step_m = 0.0f;
+    *d = KindDepths{};
+    deepest.assign(static_cast<size_t>(std::max(0, p.k - 1)), PenetrationMemo::Result{});
+    for (int i = 0; i <= p.k; ++i) {
+      pb.set_from_local(i == 0 ? from : i == p.k ? to : &p.frames[static_cast<size_t>(i - 1) * J]);
+      for (int j = 0; j < J; ++j) {
+        cur[j] = pb.position(j);
+        if (i > 0) *step_m = std::max(*step_m, glm::length(cur[j] - prev[j]));
+      }
+      std::swap(prev, cur);
+      if (i == 0 || i == p.k) continue;
+      const std::uint8_t ex = p.exempt[static_cast<size_t>(i - 1)];
+      for (int side_index = 0; side_index < 2; ++side_index) {
+        const Side side = static_cast<Side>(side_index);
+        const bool trunk = !(ex & exempt_bit(side, false));
+        const bool hands = !(ex & exempt_bit(side, true)) && !(ex & exempt_bit(other(side), true));
+        Penetration hand = hand_penetration(ctx.body, pb, side, trunk, hands);
+        Penetration arm = arm_penetration(ctx.body, pb, side, true, !trunk, hands && side_index == 0);
+        d->hand_m = std::max(d->hand_m, hand.depth_m);
+        d->arm_m = std::max(d->arm_m, arm.depth_m);
+        PenetrationMemo::Result& r = deepest[static_cast<size_t>(i - 1)];
+        if (hand.depth_m > r.depth_m) {
+          r.depth_m = hand.depth_m;
+          r.what = (side == kLeft ? "left hand in " : "right hand in ") + hand.what;
+        }
+        if (arm.depth_m > r.depth_m) {
+          r.depth_m = arm.depth_m;
+          r.what = std::move(arm.what);
+        }
+      }
+    }
+  };
+  sample(p.k, &p.frames);
+  p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
+  float step_m = 0.0f;
+  KindDepths d;
+  measure(&step_m, &d);
+  const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;  // plan_chain's rule
+  if (step_m > peak_step_m) {
+    p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
+    if (p.k >= direct_k) return false;
+    sample(p.k, &p.frames);
+    p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
+    measure(&step_m, &d);
+  }
+  p.via_points = kHandPathWaypoints;
+  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
+  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
+  constexpr float kNothingAdded_m = 0.0005f;  // plan_transition's: sampling
+  if (d.hand_m > std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m ||
+      d.arm_m > std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m)
+    return false;
+  p.max_penetration_m = std::max(d.hand_m, d.arm_m);
+  if (PenetrationMemo* memo = ctx.penetration_memo)
+    for (int i = 0; i + 1 < p.k; ++i) {
+      const glm::quat* frame = &p.frames[static_cast<size_t>(i) * J];
+      const std::uint8_t ex = p.exempt[static_cast<size_t>(i)];
+      if (!memo->find(frame, ex)) memo->add(frame, ex, std::move(deepest[static_cast<size_t>(i)]));
+    }
+  *out = std::move(p);
+  return true;
+}
+
 }  // namespace
 
 float transition_path_m(const Rig& rig, const glm::quat* from_locals, const glm::quat* to_locals) {
@@ -389,6 +653,17 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   TransitionPlan plan;
   plan.lmax_m = transition_path_m(rig, from, to);
   plan.k = transition_states(plan.lmax_m, fps, speed);
+  // From and back to the rest pose (every dictionary lookup starts and ends with them), the hand
+  // takes its own, shorter path when that is clear of the body (plan_hand_path). It is judged
+  // against the body model, so only with collision avoidance on.
+  const size_t pose_bytes = sizeof(glm::quat) * static_cast<size_t>(J);
+  const bool has_rest = static_cast<int>(ctx.rest_locals.size()) == J;
+  const bool rest_at_start = has_rest && std::memcmp(from, ctx.rest_locals.data(), pose_bytes) == 0;
+  const bool rest_at_end = has_rest && std::memcmp(to, ctx.rest_locals.data(), pose_bytes) == 0;
+  if (ctx.options.avoid_collisions && rest_at_start != rest_at_end && plan.k > kMinTransitionStates) {
+    TransitionPlan hand_path;
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, plan.k, &hand_path)) return hand_path;
+  }
   interpolate(from, to, {}, J, plan.k, &plan.frames);
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);

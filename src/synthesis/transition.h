@@ -14,6 +14,9 @@
 // from the body) is inserted and the path routed through it (the seed's remedy); when that still
 // cuts through, one or two waypoint poses with the wrists held in front of the trunk, the path a
 // chain of slerps through them with rounded corners (the arm comes forward, then across).
+// From and back to the rest pose, the hand takes its own path when that is clear of the body:
+// waypoints with the wrist on the (forward-bowed) line between its ends, the arm solved by IK
+// (plan_hand_path in transition.cpp; docs/SYNTHESIS.md, Transitions).
 #pragma once
 
 #include <cstdint>
