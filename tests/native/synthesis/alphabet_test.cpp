@@ -6,6 +6,8 @@
 // other, by more than 5 mm outside intended contact.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -260,6 +262,57 @@ TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
     }
   }
   RecordProperty("worst_arm_depth_mm", std::to_string(worst * 1000.0f));
+}
+
+// Every lexicon sign at the default settings, on the reference humanoid and the project avatar,
+// as the synthesis report gives it: a touch reaches its place (issue 4: reach error < 1 cm with
+// contact, measured at the sign's first frame) and no hand goes more than 5 mm into the trunk or
+// the other hand outside intended contact. Known gaps are held to their measured figures
+// (docs/SYNTHESIS.md, Known issues) so they cannot grow unnoticed.
+TEST(SynthesisLexicon, EveryTouchReachesAndNoHandGoesIntoTheBodyOnBothRigs) {
+  std::string text;
+  if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
+  const std::vector<testing::LexiconSign> signs = testing::lexicon_signs(text);
+  std::vector<std::pair<std::string, avatar::Avatar>> rigs;
+  rigs.push_back({"reference", make_reference_humanoid()});
+  testing::ProjectAvatar project = testing::load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  // Known gaps (measured when this test was written; docs/SYNTHESIS.md, Known issues).
+  // Reach: DAY's contact part is the right elbow on the back of the left hand, which is written in
+  // neutral space beyond the upper arm's reach from the shoulder; since the elbow is placed by the
+  // forearm (not carried on the hand's rotation, which reported a touch the elbow never made) the
+  // miss shows. DEAF on the reference humanoid: the index tip stops 2 cm short of its place at
+  // the ear (cause not yet found).
+  // Depth: hands in each other or in the trunk, mostly in the transitions from the rest pose
+  // (HAVE's and SAD's spread thumbs meeting in front of the face) and in two-handed movements.
+  const std::map<std::string, float> known_reach_mm = {
+      {"reference DAY", 117.0f}, {"avatar DAY", 78.5f}, {"reference DEAF", 22.0f}};
+  const std::map<std::string, float> known_depth_mm = {
+      {"reference DAY", 10.0f},  {"reference HAVE", 15.5f},      {"reference HAPPY", 9.5f},
+      {"reference SAD", 16.5f},  {"reference DIFFERENT", 35.0f}, {"avatar FAMILY", 8.5f},
+      {"avatar HAVE", 14.5f}};
+  float worst_reach = 0.0f, worst_depth = 0.0f;
+  for (const auto& rg : rigs) {
+    Synthesizer synth(rg.second);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    for (const testing::LexiconSign& sign : signs) {
+      ASSERT_TRUE(sign.text.ok()) << sign.gloss;
+      SynthesisResult r = synth.phrase(sign.text.items, SynthesisOptions{});
+      ASSERT_TRUE(r.ok()) << sign.gloss << ": " << r.errors[0].message;
+      const std::string key = rg.first + " " + sign.gloss;
+      const float reach_mm = r.report.max_reach_error_m * 1000.0f, depth_mm = r.report.max_penetration_m * 1000.0f;
+      if (std::getenv("SIGNWEAVE_LEXICON_REPORT")) std::printf("lexicon %s reach %.1f depth %.1f\n", key.c_str(), reach_mm, depth_mm);
+      auto kr = known_reach_mm.find(key);
+      auto kd = known_depth_mm.find(key);
+      EXPECT_LE(reach_mm, kr == known_reach_mm.end() ? 10.0f : kr->second) << key << ": the touch misses its place";
+      EXPECT_LE(depth_mm, kd == known_depth_mm.end() ? 5.0f : kd->second) << key << ": a hand in the body or the other hand";
+      if (kr == known_reach_mm.end()) worst_reach = std::max(worst_reach, reach_mm);
+      if (kd == known_depth_mm.end()) worst_depth = std::max(worst_depth, depth_mm);
+    }
+  }
+  RecordProperty("worst_reach_error_mm", std::to_string(worst_reach));
+  RecordProperty("worst_hand_depth_mm", std::to_string(worst_depth));
 }
 
 }  // namespace
