@@ -844,6 +844,38 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
           }
     }
   }
+  // Hands into each other on the way (HAVE's and FAMILY's hands leaving their contact for the
+  // rest, SAD's spread thumbs meeting in front of the face): each hand's own push is along the
+  // other hand, so the two pushes cancel or swap which hand is inside. Signers part the hands:
+  // each wrist is held out to its own side and forward for the middle of the path, by half the
+  // depth plus a margin (sideways alone was a wash: the fingers still crossed in front).
+  {
+    float hands_depth = 0.0f;
+    PoseBuilder pb(rig);
+    for (int f = 0; f + 1 < plan.k; ++f) {
+      const std::uint8_t ex = plan.exempt[static_cast<size_t>(f)];
+      if ((ex & exempt_bit(kLeft, true)) || (ex & exempt_bit(kRight, true))) continue;
+      pb.set_from_local(&plan.frames[static_cast<size_t>(f) * J]);
+      for (int s = 0; s < 2; ++s)
+        hands_depth =
+            std::max(hands_depth, hand_penetration(ctx.body, pb, static_cast<Side>(s), false, true).depth_m);
+    }
+    if (hands_depth > 0.005f) {
+      auto apart = [&](float margin_m) {
+        std::array<glm::vec3, 2> out{};
+        for (int s = 0; s < 2; ++s) {
+          const glm::vec3 own_side = s == kLeft ? rig.left : -rig.left;
+          out[s] = glm::normalize(own_side + rig.forward) * (0.5f * hands_depth + margin_m);
+        }
+        return out;
+      };
+      for (float margin : {0.03f, 0.06f, 0.10f}) {
+        for (float tau : {via_tau, 0.5f})
+          if (consider(plan_with({make_via(apart(margin), tau)}))) return best;
+        if (consider(plan_chain({make_via(apart(margin), 0.35f), make_via(apart(margin), 0.65f)}))) return best;
+      }
+    }
+  }
   // The push, then two, three and four times it; failing those, less than it: a via-pose pushed
   // further can take another swivel that is worse (a hand across the waist: 5.2 mm at 1x, 15 mm
   // at 2x, 1.2 mm at 0.75x).
