@@ -694,7 +694,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     return std::max(0.0f, d.hand_m - hand_floor_m) + std::max(0.0f, d.arm_m - arm_floor_m);
   };
   constexpr float kNothingAdded_m = 0.0005f;
-  const float direct_excess = excess_of(depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data()));
+  const KindDepths direct_depths = depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data());
+  const float direct_excess = excess_of(direct_depths);
   if (direct_excess <= kNothingAdded_m) return plan;
 
   // Route through a via-pose: the middle state with the offending hand(s) pulled out of the body
@@ -849,7 +850,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // other hand, so the two pushes cancel or swap which hand is inside. Signers part the hands:
   // each wrist is held out to its own side and forward for the middle of the path, by half the
   // depth plus a margin (sideways alone was a wash: the fingers still crossed in front).
-  {
+  // (Only when a hand goes deeper than 5 mm at all: the hands' own scan poses every state again.)
+  if (direct_depths.hand_m > 0.005f) {
     float hands_depth = 0.0f;
     PoseBuilder pb(rig);
     for (int f = 0; f + 1 < plan.k; ++f) {
