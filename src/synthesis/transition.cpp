@@ -849,7 +849,11 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // rest, SAD's spread thumbs meeting in front of the face): each hand's own push is along the
   // other hand, so the two pushes cancel or swap which hand is inside. Signers part the hands:
   // each wrist is held out to its own side and forward for the middle of the path, by half the
-  // depth plus a margin (sideways alone was a wash: the fingers still crossed in front).
+  // depth plus a margin (sideways alone was a wash: the fingers still crossed in front). Where
+  // the hands meet early on the way (SAD's spread hands just leaving the face), a waypoint at
+  // 0.15 (alone, or paired with one at 0.5) parts them from the start: one at the worst state or
+  // two at 0.35/0.65 left SAD 14-16 mm; the pair at 10 cm takes it to 0 (without the single
+  // 0.15 in the list it ended at 14.7 mm: the candidate order matters, not yet understood).
   // (Only when a hand goes deeper than 5 mm at all: the hands' own scan poses every state again.)
   if (direct_depths.hand_m > 0.005f) {
     float hands_depth = 0.0f;
@@ -872,9 +876,10 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
         return out;
       };
       for (float margin : {0.03f, 0.06f, 0.10f}) {
-        for (float tau : {via_tau, 0.5f})
+        for (float tau : {via_tau, 0.5f, 0.15f})
           if (consider(plan_with({make_via(apart(margin), tau)}))) return best;
         if (consider(plan_chain({make_via(apart(margin), 0.35f), make_via(apart(margin), 0.65f)}))) return best;
+        if (consider(plan_chain({make_via(apart(margin), 0.15f), make_via(apart(margin), 0.5f)}))) return best;
       }
     }
   }
