@@ -694,7 +694,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     return std::max(0.0f, d.hand_m - hand_floor_m) + std::max(0.0f, d.arm_m - arm_floor_m);
   };
   constexpr float kNothingAdded_m = 0.0005f;
-  const float direct_excess = excess_of(depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data()));
+  const KindDepths direct_depths = depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data());
+  const float direct_excess = excess_of(direct_depths);
   if (direct_excess <= kNothingAdded_m) return plan;
 
   // Route through a via-pose: the middle state with the offending hand(s) pulled out of the body
@@ -842,6 +843,44 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
             fwd[s] = rig.forward * (pair_depth + margin);
             if (consider(plan_with({make_via(fwd, tau)}))) return best;
           }
+    }
+  }
+  // Hands into each other on the way (HAVE's and FAMILY's hands leaving their contact for the
+  // rest, SAD's spread thumbs meeting in front of the face): each hand's own push is along the
+  // other hand, so the two pushes cancel or swap which hand is inside. Signers part the hands:
+  // each wrist is held out to its own side and forward for the middle of the path, by half the
+  // depth plus a margin (sideways alone was a wash: the fingers still crossed in front). Where
+  // the hands meet early on the way (SAD's spread hands just leaving the face), a waypoint at
+  // 0.15 (alone, or paired with one at 0.5) parts them from the start: one at the worst state or
+  // two at 0.35/0.65 left SAD 14-16 mm; the pair at 10 cm takes it to 0 (without the single
+  // 0.15 in the list it ended at 14.7 mm: the candidate order matters, not yet understood).
+  // (Only when a hand goes deeper than 5 mm at all: the hands' own scan poses every state again.)
+  if (direct_depths.hand_m > 0.005f) {
+    float hands_depth = 0.0f;
+    PoseBuilder pb(rig);
+    for (int f = 0; f + 1 < plan.k; ++f) {
+      const std::uint8_t ex = plan.exempt[static_cast<size_t>(f)];
+      if ((ex & exempt_bit(kLeft, true)) || (ex & exempt_bit(kRight, true))) continue;
+      pb.set_from_local(&plan.frames[static_cast<size_t>(f) * J]);
+      for (int s = 0; s < 2; ++s)
+        hands_depth =
+            std::max(hands_depth, hand_penetration(ctx.body, pb, static_cast<Side>(s), false, true).depth_m);
+    }
+    if (hands_depth > 0.005f) {
+      auto apart = [&](float margin_m) {
+        std::array<glm::vec3, 2> out{};
+        for (int s = 0; s < 2; ++s) {
+          const glm::vec3 own_side = s == kLeft ? rig.left : -rig.left;
+          out[s] = glm::normalize(own_side + rig.forward) * (0.5f * hands_depth + margin_m);
+        }
+        return out;
+      };
+      for (float margin : {0.03f, 0.06f, 0.10f}) {
+        for (float tau : {via_tau, 0.5f, 0.15f})
+          if (consider(plan_with({make_via(apart(margin), tau)}))) return best;
+        if (consider(plan_chain({make_via(apart(margin), 0.35f), make_via(apart(margin), 0.65f)}))) return best;
+        if (consider(plan_chain({make_via(apart(margin), 0.15f), make_via(apart(margin), 0.5f)}))) return best;
+      }
     }
   }
   // The push, then two, three and four times it; failing those, less than it: a via-pose pushed

@@ -284,14 +284,13 @@ TEST(SynthesisLexicon, EveryTouchReachesAndNoHandGoesIntoTheBodyOnBothRigs) {
   // forearm (not carried on the hand's rotation, which reported a touch the elbow never made) the
   // miss shows. DEAF on the reference humanoid: the index tip stops 2 cm short of its place at
   // the ear (cause not yet found).
-  // Depth: hands in each other or in the trunk, mostly in the transitions from the rest pose
-  // (HAVE's and SAD's spread thumbs meeting in front of the face) and in two-handed movements.
+  // Depth: the arms in the trunk or the other forearm within DAY, HAPPY and DIFFERENT on the
+  // reference humanoid (HAVE's, SAD's and FAMILY's hands in each other on the way back to the
+  // rest are parted by the hands-apart route, transition.cpp).
   const std::map<std::string, float> known_reach_mm = {
       {"reference DAY", 117.0f}, {"avatar DAY", 78.5f}, {"reference DEAF", 22.0f}};
   const std::map<std::string, float> known_depth_mm = {
-      {"reference DAY", 10.0f},  {"reference HAVE", 15.5f},      {"reference HAPPY", 9.5f},
-      {"reference SAD", 16.5f},  {"reference DIFFERENT", 35.0f}, {"avatar FAMILY", 8.5f},
-      {"avatar HAVE", 14.5f}};
+      {"reference DAY", 10.0f}, {"reference HAPPY", 9.5f}, {"reference DIFFERENT", 35.0f}};
   float worst_reach = 0.0f, worst_depth = 0.0f;
   for (const auto& rg : rigs) {
     Synthesizer synth(rg.second);

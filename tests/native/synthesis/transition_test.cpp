@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
+#include "synthesis/collision.h"
+#include "synthesis/sign_motion.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -190,6 +193,53 @@ TEST(SynthesisTransition, RestTransitionsTakeTheHandsShortPath) {
     EXPECT_LE(median_s, 1.0) << rig_name << ": median rest transition";
     RecordProperty(rig_name + "_median_rest_transition_s", std::to_string(median_s));
   }
+}
+
+// Hands that would go into each other on the way are parted (plan_transition: each wrist held out
+// to its own side and forward). HAVE's and FAMILY's hands leave their contact for the rest pose,
+// SAD's spread hands leave the face: their escape pushes point each hand along the other and
+// cancel, and the hands passed 8-16 mm into each other. Over the transition back to the rest, outside the intended
+// contact, no hand is more than 5 mm in the other hand or forearm.
+TEST(SynthesisTransition, HandsLeavingEachOtherForTheRestArePartedNotPassedThrough) {
+  std::string text;
+  if (!read_text_file(std::string(SIGNWEAVE_SOURCE_DIR) + "/data/ase/lexicon.jsonl", &text))
+    GTEST_SKIP() << "no data/ase/lexicon.jsonl";
+  const ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  std::vector<std::pair<std::string, avatar::Avatar>> rigs{{"reference", make_reference_humanoid()}};
+  if (project.present) rigs.emplace_back("avatar", project.avatar);
+  const std::vector<LexiconSign> signs = lexicon_signs(text);
+  int checked = 0;
+  for (const auto& [rig_name, av] : rigs) {
+    Synthesizer synth(av);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
+    const int J = ctx.rig.joint_count;
+    for (const LexiconSign& sign : signs) {
+      if (sign.gloss != "HAVE" && sign.gloss != "FAMILY" && sign.gloss != "SAD") continue;
+      ASSERT_TRUE(sign.text.ok()) << sign.gloss;
+      SynthesisResult r = synth.phrase(sign.text.items, SynthesisOptions{});
+      ASSERT_TRUE(r.ok()) << sign.gloss;
+      ASSERT_EQ(r.clip.joint_count(), J);
+      const ClipSegment& back = r.clip.segments.back();
+      ASSERT_EQ(back.kind, ClipSegment::Kind::Transition) << sign.gloss;
+      const int first = static_cast<int>(std::lround(back.start_s * r.clip.fps));
+      const int last = std::min(r.clip.frame_count - 1, static_cast<int>(std::lround(back.end_s * r.clip.fps)));
+      float depth_m = 0.0f;
+      PoseBuilder pb(ctx.rig);
+      for (int f = first; f <= last; ++f) {
+        const std::uint8_t ex = r.report.intended_contact[static_cast<size_t>(f)];
+        if ((ex & exempt_bit(kLeft, true)) || (ex & exempt_bit(kRight, true))) continue;
+        pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * J]);
+        for (synthesis::Side s : {kLeft, kRight}) depth_m = std::max(depth_m, hand_penetration(ctx.body, pb, s, false, true).depth_m);
+      }
+      EXPECT_LE(depth_m, 0.005f) << rig_name << " " << sign.gloss << ": hands through each other on the way to the rest";
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 3 * static_cast<int>(rigs.size())) << "HAVE, FAMILY or SAD is not in the lexicon";
 }
 
 // The final check of a phrase takes the frames the transitions already checked from the memo
