@@ -715,6 +715,17 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     plans[1].mirror_x = ctx.options.left_handed;
     plans[1].steps.assign(plans[0].steps.size(), {});
   }
+  // A touch on the other hand missing its place by more than kPlaceMissM moves the place
+  // (below), for up to kPlaceRounds rounds or until the miss is under kPlaceReachM. The first
+  // move also takes the place kPlaceForwardM forward: the point of the elbow's sphere nearest
+  // DAY's written place pulls the upper arm across the chest, into the torso in the arc down
+  // (measured, 3 rounds: no forward move 10.4 mm deep on the reference humanoid and 7.5 on the
+  // avatar, 3 cm 8.7/3.9, 5 cm 7.8/2.3 with the touch still within 7-8 mm; more rounds creep
+  // the place back in). An arm still in the trunk at a round also moves the place out by its
+  // depth plus kPlaceClearM.
+  constexpr float kPlaceMissM = 0.01f, kPlaceReachM = 0.002f, kPlaceClearM = 0.02f;
+  constexpr float kPlaceForwardM = 0.05f;
+  constexpr int kPlaceRounds = 3;
   // Solve order: a hand that is the place of the other goes first.
   std::array<int, 2> order = {0, 1};
   if (plans[0].on_other_hand) order = {1, 0};
@@ -741,7 +752,47 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     t.contact_offset = key[i].offset;
     t.hand_delta = key[i].delta;
     t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
-    key[i].swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
+    ArmPose ap = solve_arm(rig, plans[i].side, t);
+    key[i].swivel = ap.swivel_rad;
+    // A place the hand cannot reach comes to it (DAY: the right elbow on the back of the left
+    // hand, written in neutral space, beyond the reach of the upper arm from the shoulder: the
+    // elbow missed it by 78 mm on the avatar, 116 mm on the reference humanoid). The place
+    // hand's key target moves by the residual, towards where the contact part actually is
+    // (ArmPose::contact_point; hand_parts' elbow anchor is not the point the solver aims), and
+    // both are solved again; the place hand keeps its own swivel choice (body model, limits)
+    // and its per-frame clearing. Its later goals start from this target (a goal without a new
+    // location keeps it), so it stays there for the whole sign.
+    //
+    // Only for a hand that holds still on its place. A movement of the hand on the place moves
+    // its contact part's target (DAY's arc down-left moves the elbow target 5 cm, the forearm
+    // arc about the elbow is not modelled), and at the moved place the elbow cannot follow it:
+    // the right wrist's twist ran to its limit and the wrist jumped 13-19 cm in a frame
+    // (MotionSmoothness). So DAY still misses until the arc turns about the contact part.
+    bool holds_still = true;
+    for (const auto& step : plans[i].steps) holds_still = holds_still && step.empty();
+    const bool moves_place = holds_still && ap.reach_error_m > kPlaceMissM;
+    for (int round = 0; moves_place && round < kPlaceRounds && ap.reach_error_m > kPlaceReachM; ++round) {
+      glm::vec3 residual = ap.contact_point - t.point;
+      if (ap.trunk_depth_m > 0.0f) residual += (ap.trunk_depth_m + kPlaceClearM) * ap.trunk_push_dir;
+      if (round == 0) residual += kPlaceForwardM * rig.forward;
+      HandState& place_key = key[1 - i];
+      place_key.target += residual;
+      ArmTarget pt;
+      pt.point = place_key.target;
+      pt.contact_offset = place_key.offset;
+      pt.hand_delta = place_key.delta;
+      pt.body = t.body;
+      pt.has_near_swivel = true;
+      pt.near_swivel_rad = place_key.swivel;
+      ArmPose pap = solve_arm(rig, op.side, pt);
+      place_key.swivel = pap.swivel_rad;
+      t.point = key[i].target + other_hand_point(solver, plans[i], op, place_key, plans[i].place,
+                                                 plans[i].place_finger, plans[i].place_distance_m);
+      t.has_near_swivel = true;
+      t.near_swivel_rad = key[i].swivel;
+      ap = solve_arm(rig, plans[i].side, t);
+      key[i].swivel = ap.swivel_rad;
+    }
   }
   separate_crossed_hands(solver, plans, &key);
   std::array<glm::quat, 2> give_way = {resting_arm_gives_way(solver, plans, key, 0),
