@@ -732,6 +732,11 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
 
   // Key states.
   std::array<HandState, 2> key;
+  // A hand on the other hand whose contact part is on its arm and whose place was moved (below):
+  // its per-frame target is its wrist, this far from the contact target of the key pose, so a
+  // movement moves the hand and not the elbow.
+  std::array<bool, 2> wrist_led = {false, false};
+  std::array<glm::vec3, 2> wrist_from_contact = {glm::vec3(0.0f), glm::vec3(0.0f)};
   size_t before = errors->size();
   for (int i = 0; i < 2; ++i) {
     if (!plans[i].active) continue;
@@ -770,7 +775,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     // (MotionSmoothness). So DAY still misses until the arc turns about the contact part.
     bool holds_still = true;
     for (const auto& step : plans[i].steps) holds_still = holds_still && step.empty();
-    const bool moves_place = holds_still && ap.reach_error_m > kPlaceMissM;
+    HandPlace cpart;
+    int cfinger;
+    contact_part(plans[i].spec, &cpart, &cfinger);
+    const bool arm_part = cpart == HandPlace::Elbow || cpart == HandPlace::Forearm ||
+                          cpart == HandPlace::ForearmBack || cpart == HandPlace::UpperArm ||
+                          cpart == HandPlace::ElbowInside;
+    const bool moves_place = (holds_still || arm_part) && ap.reach_error_m > kPlaceMissM;
     for (int round = 0; moves_place && round < kPlaceRounds && ap.reach_error_m > kPlaceReachM; ++round) {
       glm::vec3 residual = ap.contact_point - t.point;
       if (ap.trunk_depth_m > 0.0f) residual += (ap.trunk_depth_m + kPlaceClearM) * ap.trunk_push_dir;
@@ -792,6 +803,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       t.near_swivel_rad = key[i].swivel;
       ap = solve_arm(rig, plans[i].side, t);
       key[i].swivel = ap.swivel_rad;
+    }
+    if (moves_place && !holds_still) {
+      wrist_led[i] = true;
+      wrist_from_contact[i] = arm_segments(rig, plans[i].side, ap).wrist - t.point;
     }
   }
   separate_crossed_hands(solver, plans, &key);
@@ -1174,6 +1189,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
         }
         t.contact_offset = h.offset;
+        if (wrist_led[i]) {
+          t.point += wrist_from_contact[i];
+          t.contact_offset = glm::vec3(0.0f);
+        }
         t.hand_delta = h.delta;
         t.auto_swivel = false;
         t.swivel_rad = h.swivel;
@@ -1206,8 +1225,15 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           apply_arm(rig, plan.side, ap, &pb);
           pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
           pb.finalize();
-          if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact))
-            out->max_reach_error_m = std::max(out->max_reach_error_m, ap.reach_error_m);
+          if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact)) {
+            float reach_m = ap.reach_error_m;
+            // A wrist-led hand reports its contact part's miss (on the forearm: carried by it,
+            // arm_ik.cpp solve_at), not the wrist's.
+            if (wrist_led[i])
+              reach_m = glm::length(arm_segments(rig, plan.side, ap).wrist + ap.lower * h.offset -
+                                    (t.point - wrist_from_contact[i]));
+            out->max_reach_error_m = std::max(out->max_reach_error_m, reach_m);
+          }
           if (!ctx.options.avoid_collisions) break;
           Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
           if (pen.depth_m <= 0.002f) break;
