@@ -768,11 +768,12 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     // and its per-frame clearing. Its later goals start from this target (a goal without a new
     // location keeps it), so it stays there for the whole sign.
     //
-    // Only for a hand that holds still on its place. A movement of the hand on the place moves
-    // its contact part's target (DAY's arc down-left moves the elbow target 5 cm, the forearm
-    // arc about the elbow is not modelled), and at the moved place the elbow cannot follow it:
-    // the right wrist's twist ran to its limit and the wrist jumped 13-19 cm in a frame
-    // (MotionSmoothness). So DAY still misses until the arc turns about the contact part.
+    // For a hand that holds still on its place, or whose contact part is on its arm. A movement
+    // of the hand on the place moves its contact part's target; DAY's arc down-left moved the
+    // elbow's 5 cm, off its reachable sphere at the moved place: the right wrist's twist ran to
+    // its limit and the wrist jumped 13-19 cm in a frame (MotionSmoothness). An arm contact is
+    // therefore led by its wrist through its movement (wrist_led): the arc moves the hand, the
+    // elbow stays. A hand contact with a movement keeps the written place (not measured yet).
     bool holds_still = true;
     for (const auto& step : plans[i].steps) holds_still = holds_still && step.empty();
     HandPlace cpart;
