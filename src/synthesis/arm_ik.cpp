@@ -235,7 +235,8 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
     ArmPose p;
     p.swivel_rad = swivel;
     compose(w, c, tw, rd, fl, &p);
-    p.reach_error_m = glm::length(c.wrist + carried(p) - t.point);
+    p.contact_point = c.wrist + carried(p);
+    p.reach_error_m = glm::length(p.contact_point - t.point);
     p.orientation_error_rad = rotation_angle(glm::conjugate(t.hand_delta) * p.hand);
     if (p.reach_error_m < best.pose.reach_error_m - 1e-5f) best = Solved{p, c.wrist};
     return p;

@@ -60,6 +60,7 @@ struct ArmPose {
   glm::quat shoulder{1, 0, 0, 0}, upper{1, 0, 0, 0}, lower{1, 0, 0, 0}, hand{1, 0, 0, 0};
   float swivel_rad = 0.0f;
   float reach_error_m = 0.0f;        // |achieved contact point - target|
+  glm::vec3 contact_point{0.0f};     // the achieved contact point (model space)
   float orientation_error_rad = 0.0f;// angle between requested and achieved hand rotation
   float elbow_flex_rad = 0.0f, twist_rad = 0.0f, wrist_flex_rad = 0.0f, wrist_dev_rad = 0.0f;
   float clavicle_elevation_rad = 0.0f, clavicle_protraction_rad = 0.0f;

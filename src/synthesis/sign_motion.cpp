@@ -715,12 +715,28 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     plans[1].mirror_x = ctx.options.left_handed;
     plans[1].steps.assign(plans[0].steps.size(), {});
   }
+  // A touch on the other hand missing its place by more than kPlaceMissM moves the place
+  // (below), for up to kPlaceRounds rounds or until the miss is under kPlaceReachM. The first
+  // move also takes the place kPlaceForwardM forward: the point of the elbow's sphere nearest
+  // DAY's written place pulls the upper arm across the chest, into the torso in the arc down
+  // (measured, 3 rounds: no forward move 10.4 mm deep on the reference humanoid and 7.5 on the
+  // avatar, 3 cm 8.7/3.9, 5 cm 7.8/2.3 with the touch still within 7-8 mm; more rounds creep
+  // the place back in). An arm still in the trunk at a round also moves the place out by its
+  // depth plus kPlaceClearM.
+  constexpr float kPlaceMissM = 0.01f, kPlaceReachM = 0.002f, kPlaceClearM = 0.02f;
+  constexpr float kPlaceForwardM = 0.05f;
+  constexpr int kPlaceRounds = 3;
   // Solve order: a hand that is the place of the other goes first.
   std::array<int, 2> order = {0, 1};
   if (plans[0].on_other_hand) order = {1, 0};
 
   // Key states.
   std::array<HandState, 2> key;
+  // A hand on the other hand whose contact part is on its arm and whose place was moved (below):
+  // its per-frame target is its wrist, this far from the contact target of the key pose, so a
+  // movement moves the hand and not the elbow.
+  std::array<bool, 2> wrist_led = {false, false};
+  std::array<glm::vec3, 2> wrist_from_contact = {glm::vec3(0.0f), glm::vec3(0.0f)};
   size_t before = errors->size();
   for (int i = 0; i < 2; ++i) {
     if (!plans[i].active) continue;
@@ -741,7 +757,58 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     t.contact_offset = key[i].offset;
     t.hand_delta = key[i].delta;
     t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
-    key[i].swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
+    ArmPose ap = solve_arm(rig, plans[i].side, t);
+    key[i].swivel = ap.swivel_rad;
+    // A place the hand cannot reach comes to it (DAY: the right elbow on the back of the left
+    // hand, written in neutral space, beyond the reach of the upper arm from the shoulder: the
+    // elbow missed it by 78 mm on the avatar, 116 mm on the reference humanoid). The place
+    // hand's key target moves by the residual, towards where the contact part actually is
+    // (ArmPose::contact_point; hand_parts' elbow anchor is not the point the solver aims), and
+    // both are solved again; the place hand keeps its own swivel choice (body model, limits)
+    // and its per-frame clearing. Its later goals start from this target (a goal without a new
+    // location keeps it), so it stays there for the whole sign.
+    //
+    // For a hand that holds still on its place, or whose contact part is on its arm. A movement
+    // of the hand on the place moves its contact part's target; DAY's arc down-left moved the
+    // elbow's 5 cm, off its reachable sphere at the moved place: the right wrist's twist ran to
+    // its limit and the wrist jumped 13-19 cm in a frame (MotionSmoothness). An arm contact is
+    // therefore led by its wrist through its movement (wrist_led): the arc moves the hand, the
+    // elbow stays. A hand contact with a movement keeps the written place (not measured yet).
+    bool holds_still = true;
+    for (const auto& step : plans[i].steps) holds_still = holds_still && step.empty();
+    HandPlace cpart;
+    int cfinger;
+    contact_part(plans[i].spec, &cpart, &cfinger);
+    const bool arm_part = cpart == HandPlace::Elbow || cpart == HandPlace::Forearm ||
+                          cpart == HandPlace::ForearmBack || cpart == HandPlace::UpperArm ||
+                          cpart == HandPlace::ElbowInside;
+    const bool moves_place = (holds_still || arm_part) && ap.reach_error_m > kPlaceMissM;
+    for (int round = 0; moves_place && round < kPlaceRounds && ap.reach_error_m > kPlaceReachM; ++round) {
+      glm::vec3 residual = ap.contact_point - t.point;
+      if (ap.trunk_depth_m > 0.0f) residual += (ap.trunk_depth_m + kPlaceClearM) * ap.trunk_push_dir;
+      if (round == 0) residual += kPlaceForwardM * rig.forward;
+      HandState& place_key = key[1 - i];
+      place_key.target += residual;
+      ArmTarget pt;
+      pt.point = place_key.target;
+      pt.contact_offset = place_key.offset;
+      pt.hand_delta = place_key.delta;
+      pt.body = t.body;
+      pt.has_near_swivel = true;
+      pt.near_swivel_rad = place_key.swivel;
+      ArmPose pap = solve_arm(rig, op.side, pt);
+      place_key.swivel = pap.swivel_rad;
+      t.point = key[i].target + other_hand_point(solver, plans[i], op, place_key, plans[i].place,
+                                                 plans[i].place_finger, plans[i].place_distance_m);
+      t.has_near_swivel = true;
+      t.near_swivel_rad = key[i].swivel;
+      ap = solve_arm(rig, plans[i].side, t);
+      key[i].swivel = ap.swivel_rad;
+    }
+    if (moves_place && !holds_still) {
+      wrist_led[i] = true;
+      wrist_from_contact[i] = arm_segments(rig, plans[i].side, ap).wrist - t.point;
+    }
   }
   separate_crossed_hands(solver, plans, &key);
   std::array<glm::quat, 2> give_way = {resting_arm_gives_way(solver, plans, key, 0),
@@ -1123,6 +1190,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
         }
         t.contact_offset = h.offset;
+        if (wrist_led[i]) {
+          t.point += wrist_from_contact[i];
+          t.contact_offset = glm::vec3(0.0f);
+        }
         t.hand_delta = h.delta;
         t.auto_swivel = false;
         t.swivel_rad = h.swivel;
@@ -1155,8 +1226,15 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           apply_arm(rig, plan.side, ap, &pb);
           pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
           pb.finalize();
-          if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact))
-            out->max_reach_error_m = std::max(out->max_reach_error_m, ap.reach_error_m);
+          if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact)) {
+            float reach_m = ap.reach_error_m;
+            // A wrist-led hand reports its contact part's miss (on the forearm: carried by it,
+            // arm_ik.cpp solve_at), not the wrist's.
+            if (wrist_led[i])
+              reach_m = glm::length(arm_segments(rig, plan.side, ap).wrist + ap.lower * h.offset -
+                                    (t.point - wrist_from_contact[i]));
+            out->max_reach_error_m = std::max(out->max_reach_error_m, reach_m);
+          }
           if (!ctx.options.avoid_collisions) break;
           Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
           if (pen.depth_m <= 0.002f) break;

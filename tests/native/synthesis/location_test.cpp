@@ -154,6 +154,38 @@ TEST(SynthesisLocation, OtherHandIsThePlace) {
   EXPECT_LE(r.report.max_penetration_m, 0.005f);
 }
 
+// DAY's place: the right elbow on the back of a left hand written in neutral space, which lies
+// beyond the right upper arm's reach from the shoulder (the elbow missed it by 78 mm on the
+// project avatar, 116 mm on the reference humanoid). The place comes to the elbow: the touch is
+// within 1 cm on both rigs, with neither arm in the body.
+TEST(SynthesisLocation, ElbowOnTheBackOfAHandInNeutralSpaceTouchesOnBothRigs) {
+  std::vector<std::pair<std::string, avatar::Avatar>> rigs;
+  rigs.push_back({"reference", make_reference_humanoid()});
+  ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  notation::SignSpec s = sign_at(index_point(), BodyLevel::NeutralSpace, Side::Centre, Contact::Touch);
+  s.dominant.location.kind = notation::Location::Kind::OtherHand;
+  s.dominant.location.hand_place = notation::HandPlace::BackOfHand;
+  s.dominant.location.contact_part = notation::HandPlace::Elbow;
+  s.dominant.orientation.extended_finger = {0, 1, 0};
+  s.dominant.orientation.palm = {1, 0, 0};
+  notation::HandSpec nd;
+  nd.shape = flat();
+  nd.orientation.extended_finger = {-1, 0, 0};
+  nd.orientation.palm = {0, -1, 0};
+  nd.location.kind = notation::Location::Kind::NeutralSpace;
+  nd.location.side = Side::Centre;
+  s.nondominant = nd;
+  s.nondominant_is_place = true;
+  for (const auto& rg : rigs) {
+    SynthesisResult r = synthesize_sign(s, rg.second);
+    ASSERT_TRUE(r.ok()) << rg.first << ": " << r.errors[0].message;
+    EXPECT_LT(r.report.max_reach_error_m, 0.01f) << rg.first << ": the elbow misses the back of the hand";
+    EXPECT_LE(r.report.max_penetration_m, 0.005f) << rg.first;
+  }
+}
+
 TEST(SynthesisLocation, MirrorSymmetryPlacesTheOtherHandOnTheOtherSide) {
   avatar::Avatar av = make_reference_humanoid();
   Rig rig;
