@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "math/quat_lanes.h"
 #include "synthesis/arm_ik.h"
@@ -451,8 +452,8 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
       t.max_wrist_step_rad = 0.8f;
     }
     arm = solve_arm(rig, side, t);
-    PoseBuilder solved(rig);
-    solved.set_from_local(at.data());
+    // `at` posed is pa as it stands (this loop changes no joint of it): a copy, not a second FK.
+    PoseBuilder solved = pa;
     apply_arm(rig, side, arm, &solved);
     solved.local_rotations(arm_locals.data());
     for (int j : {a.shoulder, a.upper, a.lower, a.hand})
@@ -474,7 +475,8 @@ constexpr int kHandPathWaypoints = 3;
 // The knots' shares of the path are measured once.
 class HandChain {
  public:
-  HandChain(const Rig& rig, const glm::quat* from, const glm::quat* to,
+  // pf, pt: `from` and `to` posed (the caller has them already).
+  HandChain(const Rig& rig, const glm::quat* from, const glm::quat* to, const PoseBuilder& pf, const PoseBuilder& pt,
             const std::vector<std::vector<glm::quat>>& waypoints, const std::vector<float>& fractions)
       : rig_(rig), s_{0.0f} {
     knots_.push_back(from);
@@ -483,8 +485,27 @@ class HandChain {
     s_.insert(s_.end(), fractions.begin(), fractions.end());
     s_.push_back(1.0f);
     u_.push_back(0.0f);
-    for (size_t i = 1; i < knots_.size(); ++i)
-      u_.push_back(u_.back() + transition_lmax(rig, knots_[i - 1], knots_[i]) + 1e-6f);
+    // transition_lmax between neighbouring knots, each knot posed once (transition_lmax poses
+    // both of its ends, so every waypoint twice and the ends again): the same positions, the
+    // same arithmetic.
+    const int J = rig.joint_count;
+    std::vector<glm::vec3> prev(J), cur(J);
+    for (int j = 0; j < J; ++j) prev[j] = pf.position(j);
+    PoseBuilder pw(rig);
+    for (size_t i = 1; i < knots_.size(); ++i) {
+      const PoseBuilder* posed = &pt;
+      if (i + 1 < knots_.size()) {
+        pw.set_from_local(knots_[i]);
+        posed = &pw;
+      }
+      float lmax = 0.0f;
+      for (int j = 0; j < J; ++j) {
+        cur[j] = posed->position(j);
+        lmax = std::max(lmax, glm::length(prev[j] - cur[j]));
+      }
+      u_.push_back(u_.back() + lmax + 1e-6f);
+      std::swap(prev, cur);
+    }
     for (float& x : u_) x /= u_.back();
     half_.assign(knots_.size(), 0.0f);
     for (size_t i = 1; i + 1 < knots_.size(); ++i) half_[i] = 0.45f * std::min(u_[i] - u_[i - 1], u_[i + 1] - u_[i]);
@@ -560,7 +581,7 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
     fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
     waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0);
   }
-  const HandChain chain(rig, from, to, waypoints, fractions);
+  const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
   TransitionPlan p;
   p.lmax_m = path_length(rig, from, to, sample);
@@ -571,7 +592,9 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   // Each state's deepest check in max_penetration's terms, for the memo of the phrase's final
   // check (PenetrationMemo), which would otherwise pose and check these states again.
   std::vector<PenetrationMemo::Result> deepest;
-  auto measure = [&](float* step_m, KindDepths* d) {
+  // `abandon_step_m`: a step longer than this means the states are sampled again (more of
+  // them) and this pass's depths are thrown away, so past it only the steps are measured.
+  auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m) {
     PoseBuilder pb(rig);
     std::vector<glm::vec3> prev(J), cur(J);
     *step_m = 0.0f;
@@ -584,7 +607,7 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
         if (i > 0) *step_m = std::max(*step_m, glm::length(cur[j] - prev[j]));
       }
       std::swap(prev, cur);
-      if (i == 0 || i == p.k) continue;
+      if (i == 0 || i == p.k || *step_m > abandon_step_m) continue;
       const std::uint8_t ex = p.exempt[static_cast<size_t>(i - 1)];
       for (int side_index = 0; side_index < 2; ++side_index) {
         const Side side = static_cast<Side>(side_index);
@@ -610,14 +633,14 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
   float step_m = 0.0f;
   KindDepths d;
-  measure(&step_m, &d);
   const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;  // plan_chain's rule
+  measure(&step_m, &d, peak_step_m);
   if (step_m > peak_step_m) {
     p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
     if (p.k >= direct_k) return false;
     sample(p.k, &p.frames);
     p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
-    measure(&step_m, &d);
+    measure(&step_m, &d, std::numeric_limits<float>::infinity());
   }
   p.via_points = kHandPathWaypoints;
   const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
