@@ -427,7 +427,7 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
   for (int j = 0; j < J; ++j) at[j] = slerp_shortest(from[j], to[j], s);
   PoseBuilder pa(rig);
   pa.set_from_local(at.data());
-  std::vector<glm::quat> waypoint = at, arm_locals(J);
+  std::vector<glm::quat> waypoint = at;
   for (int side_index = 0; side_index < 2; ++side_index) {
     const Side side = static_cast<Side>(side_index);
     const ArmRig& a = rig.arms[side_index];
@@ -455,9 +455,8 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
     // `at` posed is pa as it stands (this loop changes no joint of it): a copy, not a second FK.
     PoseBuilder solved = pa;
     apply_arm(rig, side, arm, &solved);
-    solved.local_rotations(arm_locals.data());
     for (int j : {a.shoulder, a.upper, a.lower, a.hand})
-      if (j >= 0) waypoint[j] = arm_locals[j];
+      if (j >= 0) waypoint[j] = solved.local_rotation(j);  // only the arm's joints are taken
   }
   return waypoint;
 }
@@ -555,6 +554,55 @@ class HandChain {
   std::vector<JointSlerp> direct_;  // each joint's direct slerp, set up once
 };
 
+// transition_path_m's measurement of the direct path, walked only as far as a question needs:
+// whether the direct path takes more states than some k. A joint's length only grows along the
+// walk, so once the longest so far asks for more than k states the whole path does, and the
+// rest of the walk (an FK pass a sample) is skipped when the hand's path is taken. Walked to its
+// end it gives transition_path_m's value bit for bit (same samples, same sums, in the same order).
+class DirectPathLength {
+ public:
+  DirectPathLength(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, float speed)
+      : rig_(rig), from_(from), to_(to), fps_(fps), speed_(speed), pb_(rig),
+        prev_(static_cast<size_t>(rig.joint_count)), length_(static_cast<size_t>(rig.joint_count), 0.0f) {
+    interpolate(from, to, {}, rig.joint_count, kPathSamples, &samples_);
+  }
+  // Whether the direct path needs more than k states (transition_states of its length).
+  bool states_exceed(int k) {
+    while (transition_states(longest_, fps_, speed_) <= k && next_ <= kPathSamples) step();
+    return transition_states(longest_, fps_, speed_) > k;
+  }
+  // The whole path's length (transition_path_m).
+  float length_m() {
+    while (next_ <= kPathSamples) step();
+    return longest_;
+  }
+
+ private:
+  void step() {
+    const int J = rig_.joint_count;
+    const int i = next_++;
+    pb_.set_from_local(i == 0 ? from_ : i == kPathSamples ? to_ : &samples_[static_cast<size_t>(i - 1) * J]);
+    for (int j = 0; j < J; ++j) {
+      if (i > 0 && !pb_.recomputed(j)) continue;  // path_length's rule: an exact 0 chord
+      const glm::vec3& cur = pb_.position(j);
+      if (i > 0) {
+        length_[static_cast<size_t>(j)] += glm::length(cur - prev_[static_cast<size_t>(j)]);
+        longest_ = std::max(longest_, length_[static_cast<size_t>(j)]);
+      }
+      prev_[static_cast<size_t>(j)] = cur;
+    }
+  }
+  const Rig& rig_;
+  const glm::quat *from_, *to_;
+  float fps_, speed_;
+  PoseBuilder pb_;
+  std::vector<glm::quat> samples_;
+  std::vector<glm::vec3> prev_;
+  std::vector<float> length_;
+  float longest_ = 0.0f;
+  int next_ = 0;
+};
+
 // A rest transition along the hand's path: the direct slerp's joints replaced by a chain through
 // waypoints on the hand's own path (hand_path_waypoint), eq. (10)'s k along the joints' path of
 // that chain, states added where a joint would outrun the minimum-jerk peak (as for the routed
@@ -562,11 +610,11 @@ class HandChain {
 // the one before: the key pose's arm is the one to match (the rest's hanging arm is reached from
 // any swivel), and solved from the rest the IK's wrist flipped on the way up (ME's raise then
 // needed more states than the direct path and was not taken; its lowering, solved from the key
-// pose, 28). Taken (true) only when it needs fewer states than `direct_k` and adds no depth, of
+// pose, 28). Taken (true) only when it needs fewer states than the direct path and adds no depth, of
 // either kind, beyond the end poses' own (0.5 mm): otherwise the direct path and its routing
 // stand, so the collision remedies are unchanged wherever the hand's path is not clear.
 bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
-                    std::uint8_t exempt_from, std::uint8_t exempt_to, int direct_k, TransitionPlan* out) {
+                    std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, TransitionPlan* out) {
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
@@ -586,7 +634,7 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   TransitionPlan p;
   p.lmax_m = path_length(rig, from, to, sample);
   p.k = transition_states(p.lmax_m, fps, speed);
-  if (p.k >= direct_k) return false;
+  if (!direct->states_exceed(p.k)) return false;
   // One pass over the states: the longest joint step of a frame (plan_chain's peak rule) and
   // the depths of each kind (depths_by_kind's measure).
   // Each state's deepest check in max_penetration's terms, for the memo of the phrase's final
@@ -637,7 +685,7 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   measure(&step_m, &d, peak_step_m);
   if (step_m > peak_step_m) {
     p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
-    if (p.k >= direct_k) return false;
+    if (!direct->states_exceed(p.k)) return false;
     sample(p.k, &p.frames);
     p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
     measure(&step_m, &d, std::numeric_limits<float>::infinity());
@@ -674,8 +722,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const int J = rig.joint_count;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   TransitionPlan plan;
-  plan.lmax_m = transition_path_m(rig, from, to);
-  plan.k = transition_states(plan.lmax_m, fps, speed);
+  DirectPathLength direct(rig, from, to, fps, speed);
   // From and back to the rest pose (every dictionary lookup starts and ends with them), the hand
   // takes its own, shorter path when that is clear of the body (plan_hand_path). It is judged
   // against the body model, so only with collision avoidance on.
@@ -683,10 +730,12 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const bool has_rest = static_cast<int>(ctx.rest_locals.size()) == J;
   const bool rest_at_start = has_rest && std::memcmp(from, ctx.rest_locals.data(), pose_bytes) == 0;
   const bool rest_at_end = has_rest && std::memcmp(to, ctx.rest_locals.data(), pose_bytes) == 0;
-  if (ctx.options.avoid_collisions && rest_at_start != rest_at_end && plan.k > kMinTransitionStates) {
+  if (ctx.options.avoid_collisions && rest_at_start != rest_at_end && direct.states_exceed(kMinTransitionStates)) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, plan.k, &hand_path)) return hand_path;
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, &hand_path)) return hand_path;
   }
+  plan.lmax_m = direct.length_m();  // transition_path_m
+  plan.k = transition_states(plan.lmax_m, fps, speed);
   interpolate(from, to, {}, J, plan.k, &plan.frames);
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
