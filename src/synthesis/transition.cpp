@@ -563,8 +563,10 @@ class DirectPathLength {
  public:
   DirectPathLength(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, float speed)
       : rig_(rig), from_(from), to_(to), fps_(fps), speed_(speed), pb_(rig),
-        prev_(static_cast<size_t>(rig.joint_count)), length_(static_cast<size_t>(rig.joint_count), 0.0f) {
-    interpolate(from, to, {}, rig.joint_count, kPathSamples, &samples_);
+        row_(static_cast<size_t>(rig.joint_count)), prev_(static_cast<size_t>(rig.joint_count)),
+        length_(static_cast<size_t>(rig.joint_count), 0.0f) {
+    path_.reserve(static_cast<size_t>(rig.joint_count));
+    for (int j = 0; j < rig.joint_count; ++j) path_.emplace_back(from[j], to[j]);
   }
   // Whether the direct path needs more than k states (transition_states of its length).
   bool states_exceed(int k) {
@@ -581,7 +583,15 @@ class DirectPathLength {
   void step() {
     const int J = rig_.joint_count;
     const int i = next_++;
-    pb_.set_from_local(i == 0 ? from_ : i == kPathSamples ? to_ : &samples_[static_cast<size_t>(i - 1) * J]);
+    if (i > 0 && i < kPathSamples) {
+      // interpolate_direct's sample i, made when it is walked to: a joint that does not move
+      // keeps its first sample, as interpolate_direct copies it.
+      const float e = minimum_jerk(static_cast<float>(i) / kPathSamples);
+      for (int j = 0; j < J; ++j)
+        if (i == 1 || !path_[static_cast<size_t>(j)].constant)
+          math::lanes::store4(&row_[static_cast<size_t>(j)], math::lanes::quat_normalize(path_[static_cast<size_t>(j)].at(e)));
+    }
+    pb_.set_from_local(i == 0 ? from_ : i == kPathSamples ? to_ : row_.data());
     for (int j = 0; j < J; ++j) {
       if (i > 0 && !pb_.recomputed(j)) continue;  // path_length's rule: an exact 0 chord
       const glm::vec3& cur = pb_.position(j);
@@ -596,7 +606,8 @@ class DirectPathLength {
   const glm::quat *from_, *to_;
   float fps_, speed_;
   PoseBuilder pb_;
-  std::vector<glm::quat> samples_;
+  std::vector<JointSlerp> path_;  // each joint's direct slerp (interpolate_direct's)
+  std::vector<glm::quat> row_;    // the sample being walked
   std::vector<glm::vec3> prev_;
   std::vector<float> length_;
   float longest_ = 0.0f;
