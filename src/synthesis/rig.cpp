@@ -269,6 +269,15 @@ glm::vec3 PoseBuilder::tip(Side side, int finger) const {
   return attached(c.bones[2], rig->bind_tip(side, finger));
 }
 
+glm::quat PoseBuilder::local_rotation(int j) const {
+  const Rig& r = *rig;
+  int p = r.parent[j];
+  glm::quat dp = p < 0 ? glm::quat(1, 0, 0, 0) : delta_[p];
+  // local_rotations' formula for one joint
+  glm::quat rel = glm::conjugate(r.bind_rot[j]) * glm::conjugate(dp) * delta_[j] * r.bind_rot[j];
+  return glm::normalize(r.bind_local_rot[j] * rel);
+}
+
 void PoseBuilder::local_rotations(glm::quat* out) const {
   const Rig& r = *rig;
   for (int j = 0; j < r.joint_count; ++j) {

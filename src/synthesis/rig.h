@@ -91,6 +91,7 @@ struct PoseBuilder {
   }
   glm::vec3 tip(Side side, int finger) const;
   void local_rotations(glm::quat* out) const;  // rig.joint_count entries
+  glm::quat local_rotation(int joint) const;  // one joint's entry of local_rotations
 
   const Rig* rig;
  private:

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "math/quat_lanes.h"
 #include "synthesis/arm_ik.h"
@@ -426,7 +427,7 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
   for (int j = 0; j < J; ++j) at[j] = slerp_shortest(from[j], to[j], s);
   PoseBuilder pa(rig);
   pa.set_from_local(at.data());
-  std::vector<glm::quat> waypoint = at, arm_locals(J);
+  std::vector<glm::quat> waypoint = at;
   for (int side_index = 0; side_index < 2; ++side_index) {
     const Side side = static_cast<Side>(side_index);
     const ArmRig& a = rig.arms[side_index];
@@ -451,12 +452,11 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
       t.max_wrist_step_rad = 0.8f;
     }
     arm = solve_arm(rig, side, t);
-    PoseBuilder solved(rig);
-    solved.set_from_local(at.data());
+    // `at` posed is pa as it stands (this loop changes no joint of it): a copy, not a second FK.
+    PoseBuilder solved = pa;
     apply_arm(rig, side, arm, &solved);
-    solved.local_rotations(arm_locals.data());
     for (int j : {a.shoulder, a.upper, a.lower, a.hand})
-      if (j >= 0) waypoint[j] = arm_locals[j];
+      if (j >= 0) waypoint[j] = solved.local_rotation(j);  // only the arm's joints are taken
   }
   return waypoint;
 }
@@ -474,7 +474,8 @@ constexpr int kHandPathWaypoints = 3;
 // The knots' shares of the path are measured once.
 class HandChain {
  public:
-  HandChain(const Rig& rig, const glm::quat* from, const glm::quat* to,
+  // pf, pt: `from` and `to` posed (the caller has them already).
+  HandChain(const Rig& rig, const glm::quat* from, const glm::quat* to, const PoseBuilder& pf, const PoseBuilder& pt,
             const std::vector<std::vector<glm::quat>>& waypoints, const std::vector<float>& fractions)
       : rig_(rig), s_{0.0f} {
     knots_.push_back(from);
@@ -483,8 +484,27 @@ class HandChain {
     s_.insert(s_.end(), fractions.begin(), fractions.end());
     s_.push_back(1.0f);
     u_.push_back(0.0f);
-    for (size_t i = 1; i < knots_.size(); ++i)
-      u_.push_back(u_.back() + transition_lmax(rig, knots_[i - 1], knots_[i]) + 1e-6f);
+    // transition_lmax between neighbouring knots, each knot posed once (transition_lmax poses
+    // both of its ends, so every waypoint twice and the ends again): the same positions, the
+    // same arithmetic.
+    const int J = rig.joint_count;
+    std::vector<glm::vec3> prev(J), cur(J);
+    for (int j = 0; j < J; ++j) prev[j] = pf.position(j);
+    PoseBuilder pw(rig);
+    for (size_t i = 1; i < knots_.size(); ++i) {
+      const PoseBuilder* posed = &pt;
+      if (i + 1 < knots_.size()) {
+        pw.set_from_local(knots_[i]);
+        posed = &pw;
+      }
+      float lmax = 0.0f;
+      for (int j = 0; j < J; ++j) {
+        cur[j] = posed->position(j);
+        lmax = std::max(lmax, glm::length(prev[j] - cur[j]));
+      }
+      u_.push_back(u_.back() + lmax + 1e-6f);
+      std::swap(prev, cur);
+    }
     for (float& x : u_) x /= u_.back();
     half_.assign(knots_.size(), 0.0f);
     for (size_t i = 1; i + 1 < knots_.size(); ++i) half_[i] = 0.45f * std::min(u_[i] - u_[i - 1], u_[i + 1] - u_[i]);
@@ -534,6 +554,66 @@ class HandChain {
   std::vector<JointSlerp> direct_;  // each joint's direct slerp, set up once
 };
 
+// transition_path_m's measurement of the direct path, walked only as far as a question needs:
+// whether the direct path takes more states than some k. A joint's length only grows along the
+// walk, so once the longest so far asks for more than k states the whole path does, and the
+// rest of the walk (an FK pass a sample) is skipped when the hand's path is taken. Walked to its
+// end it gives transition_path_m's value bit for bit (same samples, same sums, in the same order).
+class DirectPathLength {
+ public:
+  DirectPathLength(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, float speed)
+      : rig_(rig), from_(from), to_(to), fps_(fps), speed_(speed), pb_(rig),
+        row_(static_cast<size_t>(rig.joint_count)), prev_(static_cast<size_t>(rig.joint_count)),
+        length_(static_cast<size_t>(rig.joint_count), 0.0f) {
+    path_.reserve(static_cast<size_t>(rig.joint_count));
+    for (int j = 0; j < rig.joint_count; ++j) path_.emplace_back(from[j], to[j]);
+  }
+  // Whether the direct path needs more than k states (transition_states of its length).
+  bool states_exceed(int k) {
+    while (transition_states(longest_, fps_, speed_) <= k && next_ <= kPathSamples) step();
+    return transition_states(longest_, fps_, speed_) > k;
+  }
+  // The whole path's length (transition_path_m).
+  float length_m() {
+    while (next_ <= kPathSamples) step();
+    return longest_;
+  }
+
+ private:
+  void step() {
+    const int J = rig_.joint_count;
+    const int i = next_++;
+    if (i > 0 && i < kPathSamples) {
+      // interpolate_direct's sample i, made when it is walked to: a joint that does not move
+      // keeps its first sample, as interpolate_direct copies it.
+      const float e = minimum_jerk(static_cast<float>(i) / kPathSamples);
+      for (int j = 0; j < J; ++j)
+        if (i == 1 || !path_[static_cast<size_t>(j)].constant)
+          math::lanes::store4(&row_[static_cast<size_t>(j)], math::lanes::quat_normalize(path_[static_cast<size_t>(j)].at(e)));
+    }
+    pb_.set_from_local(i == 0 ? from_ : i == kPathSamples ? to_ : row_.data());
+    for (int j = 0; j < J; ++j) {
+      if (i > 0 && !pb_.recomputed(j)) continue;  // path_length's rule: an exact 0 chord
+      const glm::vec3& cur = pb_.position(j);
+      if (i > 0) {
+        length_[static_cast<size_t>(j)] += glm::length(cur - prev_[static_cast<size_t>(j)]);
+        longest_ = std::max(longest_, length_[static_cast<size_t>(j)]);
+      }
+      prev_[static_cast<size_t>(j)] = cur;
+    }
+  }
+  const Rig& rig_;
+  const glm::quat *from_, *to_;
+  float fps_, speed_;
+  PoseBuilder pb_;
+  std::vector<JointSlerp> path_;  // each joint's direct slerp (interpolate_direct's)
+  std::vector<glm::quat> row_;    // the sample being walked
+  std::vector<glm::vec3> prev_;
+  std::vector<float> length_;
+  float longest_ = 0.0f;
+  int next_ = 0;
+};
+
 // A rest transition along the hand's path: the direct slerp's joints replaced by a chain through
 // waypoints on the hand's own path (hand_path_waypoint), eq. (10)'s k along the joints' path of
 // that chain, states added where a joint would outrun the minimum-jerk peak (as for the routed
@@ -541,11 +621,11 @@ class HandChain {
 // the one before: the key pose's arm is the one to match (the rest's hanging arm is reached from
 // any swivel), and solved from the rest the IK's wrist flipped on the way up (ME's raise then
 // needed more states than the direct path and was not taken; its lowering, solved from the key
-// pose, 28). Taken (true) only when it needs fewer states than `direct_k` and adds no depth, of
+// pose, 28). Taken (true) only when it needs fewer states than the direct path and adds no depth, of
 // either kind, beyond the end poses' own (0.5 mm): otherwise the direct path and its routing
 // stand, so the collision remedies are unchanged wherever the hand's path is not clear.
 bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
-                    std::uint8_t exempt_from, std::uint8_t exempt_to, int direct_k, TransitionPlan* out) {
+                    std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, TransitionPlan* out) {
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
@@ -560,18 +640,20 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
     fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
     waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0);
   }
-  const HandChain chain(rig, from, to, waypoints, fractions);
+  const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
   TransitionPlan p;
   p.lmax_m = path_length(rig, from, to, sample);
   p.k = transition_states(p.lmax_m, fps, speed);
-  if (p.k >= direct_k) return false;
+  if (!direct->states_exceed(p.k)) return false;
   // One pass over the states: the longest joint step of a frame (plan_chain's peak rule) and
   // the depths of each kind (depths_by_kind's measure).
   // Each state's deepest check in max_penetration's terms, for the memo of the phrase's final
   // check (PenetrationMemo), which would otherwise pose and check these states again.
   std::vector<PenetrationMemo::Result> deepest;
-  auto measure = [&](float* step_m, KindDepths* d) {
+  // `abandon_step_m`: a step longer than this means the states are sampled again (more of
+  // them) and this pass's depths are thrown away, so past it only the steps are measured.
+  auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m) {
     PoseBuilder pb(rig);
     std::vector<glm::vec3> prev(J), cur(J);
     *step_m = 0.0f;
@@ -584,7 +666,7 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
         if (i > 0) *step_m = std::max(*step_m, glm::length(cur[j] - prev[j]));
       }
       std::swap(prev, cur);
-      if (i == 0 || i == p.k) continue;
+      if (i == 0 || i == p.k || *step_m > abandon_step_m) continue;
       const std::uint8_t ex = p.exempt[static_cast<size_t>(i - 1)];
       for (int side_index = 0; side_index < 2; ++side_index) {
         const Side side = static_cast<Side>(side_index);
@@ -610,14 +692,14 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
   float step_m = 0.0f;
   KindDepths d;
-  measure(&step_m, &d);
   const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;  // plan_chain's rule
+  measure(&step_m, &d, peak_step_m);
   if (step_m > peak_step_m) {
     p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
-    if (p.k >= direct_k) return false;
+    if (!direct->states_exceed(p.k)) return false;
     sample(p.k, &p.frames);
     p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
-    measure(&step_m, &d);
+    measure(&step_m, &d, std::numeric_limits<float>::infinity());
   }
   p.via_points = kHandPathWaypoints;
   const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
@@ -651,8 +733,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const int J = rig.joint_count;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   TransitionPlan plan;
-  plan.lmax_m = transition_path_m(rig, from, to);
-  plan.k = transition_states(plan.lmax_m, fps, speed);
+  DirectPathLength direct(rig, from, to, fps, speed);
   // From and back to the rest pose (every dictionary lookup starts and ends with them), the hand
   // takes its own, shorter path when that is clear of the body (plan_hand_path). It is judged
   // against the body model, so only with collision avoidance on.
@@ -660,10 +741,12 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const bool has_rest = static_cast<int>(ctx.rest_locals.size()) == J;
   const bool rest_at_start = has_rest && std::memcmp(from, ctx.rest_locals.data(), pose_bytes) == 0;
   const bool rest_at_end = has_rest && std::memcmp(to, ctx.rest_locals.data(), pose_bytes) == 0;
-  if (ctx.options.avoid_collisions && rest_at_start != rest_at_end && plan.k > kMinTransitionStates) {
+  if (ctx.options.avoid_collisions && rest_at_start != rest_at_end && direct.states_exceed(kMinTransitionStates)) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, plan.k, &hand_path)) return hand_path;
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, &hand_path)) return hand_path;
   }
+  plan.lmax_m = direct.length_m();  // transition_path_m
+  plan.k = transition_states(plan.lmax_m, fps, speed);
   interpolate(from, to, {}, J, plan.k, &plan.frames);
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
