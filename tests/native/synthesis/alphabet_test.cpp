@@ -169,11 +169,9 @@ TEST(SynthesisLexicon, LovesCrossingForearmsStayClearAtAnySpeedAndFrameRate) {
     if (sign.gloss == "LOVE") love = &sign.text;
   ASSERT_NE(love, nullptr) << "LOVE is not in the lexicon";
   ASSERT_TRUE(love->ok());
-  std::vector<std::pair<std::string, avatar::Avatar>> rigs;
-  rigs.push_back({"reference", make_reference_humanoid()});
-  testing::ProjectAvatar project = testing::load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  std::string rig_error;
+  const testing::NamedRigs rigs = testing::reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   float worst = 0.0f;
   for (const auto& rg : rigs) {
     Synthesizer synth(rg.second);
@@ -210,11 +208,9 @@ TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
   std::string text;
   if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
   const std::vector<testing::LexiconSign> signs = testing::lexicon_signs(text);
-  std::vector<std::pair<std::string, avatar::Avatar>> rigs;
-  rigs.push_back({"reference", make_reference_humanoid()});
-  testing::ProjectAvatar project = testing::load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  std::string rig_error;
+  const testing::NamedRigs rigs = testing::reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   // Known gaps, the worst of the nine settings as measured (mm, rounded up to 0.1). Within the
   // sign: DAY (the right upper arm in the torso, the elbow on the back of the other hand; 9.5 mm
   // before the place came to the elbow, 5.6 now). Within the sign, varying with the frames: MORNING (the left forearm in
@@ -273,11 +269,9 @@ TEST(SynthesisLexicon, EveryTouchReachesAndNoHandGoesIntoTheBodyOnBothRigs) {
   std::string text;
   if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
   const std::vector<testing::LexiconSign> signs = testing::lexicon_signs(text);
-  std::vector<std::pair<std::string, avatar::Avatar>> rigs;
-  rigs.push_back({"reference", make_reference_humanoid()});
-  testing::ProjectAvatar project = testing::load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  std::string rig_error;
+  const testing::NamedRigs rigs = testing::reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   // Known gaps (measured when this test was written; docs/SYNTHESIS.md, Known issues).
   // Reach: DAY's right elbow on the back of the left hand (written in neutral space, beyond the
   // upper arm's reach) touches since the place comes to it (sign_motion.cpp: 2.5 mm on the

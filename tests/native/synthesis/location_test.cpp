@@ -159,11 +159,9 @@ TEST(SynthesisLocation, OtherHandIsThePlace) {
 // project avatar, 116 mm on the reference humanoid). The place comes to the elbow: the touch is
 // within 1 cm on both rigs, with neither arm in the body.
 TEST(SynthesisLocation, ElbowOnTheBackOfAHandInNeutralSpaceTouchesOnBothRigs) {
-  std::vector<std::pair<std::string, avatar::Avatar>> rigs;
-  rigs.push_back({"reference", make_reference_humanoid()});
-  ProjectAvatar project = load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  std::string rig_error;
+  const NamedRigs rigs = reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   notation::SignSpec s = sign_at(index_point(), BodyLevel::NeutralSpace, Side::Centre, Contact::Touch);
   s.dominant.location.kind = notation::Location::Kind::OtherHand;
   s.dominant.location.hand_place = notation::HandPlace::BackOfHand;

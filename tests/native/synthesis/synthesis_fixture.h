@@ -150,4 +150,16 @@ inline ProjectAvatar load_project_avatar() {
   return p;
 }
 
+// The rigs the lexicon-wide tests run on, by name: the reference humanoid and, where the checkout
+// has it, the project avatar. `error` is load_project_avatar's (a model the loader refuses).
+using NamedRigs = std::vector<std::pair<std::string, avatar::Avatar>>;
+inline NamedRigs reference_and_project_avatar(std::string* error) {
+  NamedRigs rigs;
+  rigs.push_back({"reference", make_reference_humanoid()});
+  ProjectAvatar project = load_project_avatar();
+  *error = project.error;
+  if (project.present && project.error.empty()) rigs.push_back({"avatar", std::move(project.avatar)});
+  return rigs;
+}
+
 }  // namespace sw::synthesis::testing

@@ -159,10 +159,9 @@ TEST(SynthesisTransition, RestTransitionsTakeTheHandsShortPath) {
   std::string text;
   if (!read_text_file(std::string(SIGNWEAVE_SOURCE_DIR) + "/data/ase/lexicon.jsonl", &text))
     GTEST_SKIP() << "no data/ase/lexicon.jsonl";
-  const ProjectAvatar project = load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  std::vector<std::pair<std::string, avatar::Avatar>> rigs{{"reference", make_reference_humanoid()}};
-  if (project.present) rigs.emplace_back("avatar", project.avatar);
+  std::string rig_error;
+  const NamedRigs rigs = reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   const std::vector<LexiconSign> signs = lexicon_signs(text);
   for (const auto& [rig_name, av] : rigs) {
     Synthesizer synth(av);
@@ -204,10 +203,9 @@ TEST(SynthesisTransition, HandsLeavingEachOtherForTheRestArePartedNotPassedThrou
   std::string text;
   if (!read_text_file(std::string(SIGNWEAVE_SOURCE_DIR) + "/data/ase/lexicon.jsonl", &text))
     GTEST_SKIP() << "no data/ase/lexicon.jsonl";
-  const ProjectAvatar project = load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  std::vector<std::pair<std::string, avatar::Avatar>> rigs{{"reference", make_reference_humanoid()}};
-  if (project.present) rigs.emplace_back("avatar", project.avatar);
+  std::string rig_error;
+  const NamedRigs rigs = reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   const std::vector<LexiconSign> signs = lexicon_signs(text);
   int checked = 0;
   for (const auto& [rig_name, av] : rigs) {
