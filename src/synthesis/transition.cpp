@@ -374,6 +374,21 @@ float max_joint_step(const Rig& rig, const glm::quat* from, const glm::quat* to,
   return worst;
 }
 
+// Poses each of a plan's k-1 in-between states and hands it to `visit` (which keeps the depths it
+// measures). With skip_contact, states where either hand may touch (the first and last third of a
+// transition leaving or arriving at a contact) are left out: the routing asks what the path does
+// away from the contacts.
+template <typename Visit>
+void for_each_state(const Rig& rig, const TransitionPlan& plan, bool skip_contact, Visit visit) {
+  PoseBuilder pb(rig);
+  for (int f = 0; f + 1 < plan.k; ++f) {
+    const std::uint8_t ex = plan.exempt[static_cast<size_t>(f)];
+    if (skip_contact && ((ex & exempt_bit(kLeft, true)) || (ex & exempt_bit(kRight, true)))) continue;
+    pb.set_from_local(&plan.frames[static_cast<size_t>(f) * rig.joint_count]);
+    visit(pb);
+  }
+}
+
 // The intended-contact bits of a transition's k-1 states: a hand leaving (arriving at) a contact
 // may touch during the first (last) third (plan_transition's rule).
 std::vector<std::uint8_t> transition_exempt(int k, std::uint8_t exempt_from, std::uint8_t exempt_to) {
@@ -898,13 +913,9 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // forearms are nearer each other), then the other.
   {
     float pair_depth = 0.0f;
-    PoseBuilder pb(rig);
-    for (int f = 0; f + 1 < plan.k; ++f) {
-      const std::uint8_t ex = plan.exempt[static_cast<size_t>(f)];
-      if ((ex & exempt_bit(kLeft, true)) || (ex & exempt_bit(kRight, true))) continue;
-      pb.set_from_local(&plan.frames[static_cast<size_t>(f) * J]);
+    for_each_state(rig, plan, true, [&](const PoseBuilder& pb) {
       pair_depth = std::max(pair_depth, arm_penetration(ctx.body, pb, kLeft, false, false, true).depth_m);
-    }
+    });
     if (pair_depth > 0.005f) {
       auto forearms = [&](const glm::quat* locals, float* gap_m) {
         PoseBuilder p(rig);
@@ -940,15 +951,10 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // (Only when a hand goes deeper than 5 mm at all: the hands' own scan poses every state again.)
   if (direct_depths.hand_m > 0.005f) {
     float hands_depth = 0.0f;
-    PoseBuilder pb(rig);
-    for (int f = 0; f + 1 < plan.k; ++f) {
-      const std::uint8_t ex = plan.exempt[static_cast<size_t>(f)];
-      if ((ex & exempt_bit(kLeft, true)) || (ex & exempt_bit(kRight, true))) continue;
-      pb.set_from_local(&plan.frames[static_cast<size_t>(f) * J]);
-      for (int s = 0; s < 2; ++s)
-        hands_depth =
-            std::max(hands_depth, hand_penetration(ctx.body, pb, static_cast<Side>(s), false, true).depth_m);
-    }
+    for_each_state(rig, plan, true, [&](const PoseBuilder& pb) {
+      for (Side side : {kLeft, kRight})
+        hands_depth = std::max(hands_depth, hand_penetration(ctx.body, pb, side, false, true).depth_m);
+    });
     if (hands_depth > 0.005f) {
       auto apart = [&](float margin_m) {
         std::array<glm::vec3, 2> out{};
@@ -980,17 +986,12 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // half (the project avatar's fist at shoulder_top: upper arm 117 mm in the torso before the via
   // at mid-transition, 138 mm after one at 0.2), so two: forward early, then forward late.
   float depth[2] = {0.0f, 0.0f};
-  {
-    PoseBuilder pb(rig);
-    for (int f = 0; f + 1 < plan.k; ++f) {
-      pb.set_from_local(&plan.frames[static_cast<size_t>(f) * J]);
-      for (int s = 0; s < 2; ++s) {
-        Side side = static_cast<Side>(s);
-        depth[s] = std::max(depth[s], arm_penetration(ctx.body, pb, side, true, false, false).depth_m);
-        depth[s] = std::max(depth[s], hand_penetration(ctx.body, pb, side, true, false).depth_m);
-      }
+  for_each_state(rig, plan, false, [&](const PoseBuilder& pb) {
+    for (Side side : {kLeft, kRight}) {
+      depth[side] = std::max(depth[side], arm_penetration(ctx.body, pb, side, true, false, false).depth_m);
+      depth[side] = std::max(depth[side], hand_penetration(ctx.body, pb, side, true, false).depth_m);
     }
-  }
+  });
   auto forward_push = [&](float margin_m) {
     std::array<glm::vec3, 2> fwd{};
     for (int s = 0; s < 2; ++s)
