@@ -378,13 +378,11 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
   return best;
 }
 
-bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose) {
-  // Only for a real conflict: the arm deeper in the trunk than the 5 mm rule allows, or the
-  // elbow clearly behind the body (a graze of a few mm is the swivel's and the per-frame fix's
-  // business; turning the hand 15 degrees for it would cost more than it saves).
-  if (!t->body) return false;
-  const float elbow_behind = pose->body_cost - arm_trunk_cost(pose->trunk_depth_m);
-  if (pose->trunk_depth_m <= 0.005f && elbow_behind <= 0.03f) return false;
+namespace {
+
+// The turns of the hand about its contact point shared by turn_hand_out_of_body and
+// turn_hand_to_reach. `must_reach`: a turn frees the pose only if the touch then reaches (5 mm).
+bool turn_about_contact(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose, bool must_reach) {
   // Two ways to swing the wrist out about the contact point: along the deepest segment's way
   // out of the trunk, and forward (away from the body, which also brings an elbow from behind
   // the body to its side).
@@ -418,7 +416,7 @@ bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pos
       ArmPose p = solve_arm(rig, side, turned);
       if (p.reach_error_m > pose->reach_error_m + 0.002f) continue;  // a touch must still touch
       float sc = score(p);
-      if (p.body_cost <= 0.03f && sc < score(*pose)) {
+      if (p.body_cost <= 0.03f && (!must_reach || p.reach_error_m <= 0.005f) && sc < score(*pose)) {
         freed = true;
       } else if (!(sc < best_score - 1e-3f)) {
         continue;
@@ -432,6 +430,32 @@ bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pos
   t->hand_delta = best_delta;
   *pose = best;
   return true;
+}
+
+}  // namespace
+
+bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose) {
+  // Only for a real conflict: the arm deeper in the trunk than the 5 mm rule allows, or the
+  // elbow clearly behind the body (a graze of a few mm is the swivel's and the per-frame fix's
+  // business; turning the hand 15 degrees for it would cost more than it saves).
+  if (!t->body) return false;
+  const float elbow_behind = pose->body_cost - arm_trunk_cost(pose->trunk_depth_m);
+  if (pose->trunk_depth_m <= 0.005f && elbow_behind <= 0.03f) return false;
+  return turn_about_contact(rig, side, t, pose, false);
+}
+
+bool turn_hand_to_reach(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose) {
+  // Only a touch that misses by more than the 5 mm the swivel search already allows, and only
+  // when the wrist target the requested orientation puts the wrist at is closer to the shoulder
+  // joint than the folded arm reaches (the elbow's flexion limit; a target beyond the stretched
+  // arm is not brought nearer by turning the hand).
+  if (!t->hand_contact || pose->reach_error_m <= 0.005f) return false;
+  const ArmRig& a = rig.arms[side];
+  const float folded = chain_bind(rig, side).d_min;
+  const glm::vec3 wrist_target = t->point - t->hand_delta * t->contact_offset;
+  // (Measured from the upper arm's bind position: the clavicle's shrug moves it a centimetre.)
+  if (glm::length(wrist_target - rig.bind_pos[a.upper]) >= folded + 0.01f) return false;
+  return turn_about_contact(rig, side, t, pose, true);
 }
 
 void apply_arm(const Rig& rig, Side side, const ArmPose& p, PoseBuilder* b) {

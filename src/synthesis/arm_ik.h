@@ -88,6 +88,15 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& target);
 // body cost), else the best-scoring turn if it beats not turning. Returns true (t->hand_delta and *pose updated) when a
 // turn won. The orientation error it costs is the price of the 5 mm rule. Needs t->body.
 bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose);
+// A touch the arm cannot reach because the elbow cannot fold further: with the requested
+// orientation the wrist would be closer to the shoulder joint than the arm folded at its 150
+// degree flexion limit reaches (DEAF's index tip on the ear, pointing up, on the reference
+// humanoid: the wrist 11 cm from the shoulder joint, the folded arm 14.5 cm; the best swivel
+// raised the elbow and missed by 22 mm with the hand 72 degrees off). A signer tilts the hand
+// about the fingertip, the wrist forward: the same turns as turn_hand_out_of_body, the smallest
+// that reaches within 5 mm with the arm free winning. Only for a touch (t->hand_contact) missing
+// by more than 5 mm with the wrist target inside the folded arm's reach; true when a turn won.
+bool turn_hand_to_reach(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose);
 void apply_arm(const Rig& rig, Side side, const ArmPose& pose, PoseBuilder* builder);
 
 }  // namespace sw::synthesis

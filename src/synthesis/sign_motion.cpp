@@ -394,6 +394,8 @@ struct Solver {
       // An orientation that puts the arm in the body gives way (arm_ik.h).
       t.point = st.target;
       if (turn_hand_out_of_body(rig, plan.side, &t, &best)) st.delta = t.hand_delta;
+      // A touch the folded arm cannot reach with the written orientation tilts the hand (arm_ik.h).
+      if (turn_hand_to_reach(rig, plan.side, &t, &best)) st.delta = t.hand_delta;
       st.swivel = best.swivel_rad;
     }
     return st;

@@ -4,7 +4,8 @@
 // moves further than the allowed step and the contact point still reaches its target.
 // Swivel continuity (ArmTarget::near_swivel_rad): nearby targets solved in sequence, each near
 // the one before, get nearby swivels. A contact part on the forearm (the elbow) is placed by the
-// forearm, whatever the wrist does.
+// forearm, whatever the wrist does. A touch closer to the shoulder than the folded arm reaches
+// tilts the hand about its contact point until it reaches.
 #include "synthesis/arm_ik.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include "synthesis/collision.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/orientation.h"
+#include "synthesis/sign_motion.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -149,6 +151,59 @@ TEST(SynthesisArmIk, AContactOnTheForearmIsPlacedByTheForearm) {
   }
   // The wrist did bend (so a hand-carried offset would have swung).
   EXPECT_GT(flexed, 0);
+}
+
+// DEAF's index tip on the ear, pointing up, palm in, on the reference humanoid: with the written
+// orientation the wrist would be 11 cm from the shoulder joint, and the arm folded to the elbow's
+// 150 degree limit reaches no nearer than 14.5 cm, so every swivel missed (32 mm with the elbow
+// down, in the head; the chosen one raised the elbow and missed by 22 mm, the hand 72 degrees
+// off). The hand tilts about the fingertip (the wrist forward) until the tip touches, the arm
+// out of the trunk, the hand off the written orientation by no more than that tilt needs. A touch
+// the arm reaches keeps its orientation (the mouth).
+TEST(SynthesisArmIk, ATouchTooCloseForTheFoldedArmTiltsTheHandToReach) {
+  avatar::Avatar av = make_reference_humanoid();
+  SynthContext ctx;
+  std::string error;
+  ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
+  const Rig& rig = ctx.rig;
+  PoseBuilder bind(rig);
+  bind.finalize();
+  auto touch_target = [&](const char* notation_text, const char* anchor, ArmTarget* t) {
+    PhraseText text = phrase_from_text(notation_text, {});
+    ASSERT_TRUE(text.ok());
+    const notation::HandSpec& spec = text.items[0].sign.dominant;
+    PartPoint place;
+    ASSERT_TRUE(anchor_point(av, bind, anchor, &place));
+    PoseBuilder hand(rig);
+    pose_fingers(rig, kRight, solve_handshape(rig, kRight, spec.shape), glm::quat(1, 0, 0, 0), &hand);
+    hand.finalize();
+    t->point = place.point;
+    t->contact_offset = hand_part(hand, kRight, notation::HandPlace::Fingertip, 1).point - rig.bind_pos[rig.arms[kRight].hand];
+    t->hand_delta = hand_delta_for(rig, kRight, orientation_frame(rig, spec.orientation, kRight, false));
+    t->body = &ctx.body;
+    t->hand_contact = true;
+  };
+  ArmTarget ear;
+  touch_target("R(H(finger2), E(u), P(i), Loc(ears, right, touch), C(tip, 2))", "body/ears/right", &ear);
+  const glm::quat written = ear.hand_delta;
+  ArmPose p = solve_arm(rig, kRight, ear);
+  // The precondition the turn is for: no swivel reaches with the written orientation.
+  ASSERT_GT(p.reach_error_m, 0.01f);
+  ASSERT_TRUE(turn_hand_to_reach(rig, kRight, &ear, &p));
+  EXPECT_LT(p.reach_error_m, 0.005f);
+  EXPECT_LE(p.trunk_depth_m, 0.005f);
+  EXPECT_LE(p.elbow_flex_rad, arm_limits().elbow_flex_max + 1e-4f);
+  EXPECT_LT(testing::deg(rotation_angle(glm::conjugate(written) * p.hand)), 45.0f);
+  // The turn swings the wrist forward (the fingertip stays on the ear).
+  const ArmSegments seg = arm_segments(rig, kRight, p);
+  EXPECT_GT(glm::dot(seg.wrist - ear.point, rig.forward), 0.02f);
+
+  ArmTarget mouth;
+  touch_target("R(H(finger2), E(u), P(i), Loc(mouth, right, touch), C(tip, 2))", "body/mouth/right", &mouth);
+  ArmPose m = solve_arm(rig, kRight, mouth);
+  const glm::quat mouth_written = mouth.hand_delta;
+  EXPECT_FALSE(turn_hand_to_reach(rig, kRight, &mouth, &m));
+  EXPECT_EQ(mouth.hand_delta, mouth_written);
 }
 
 }  // namespace
