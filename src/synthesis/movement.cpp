@@ -90,7 +90,7 @@ bool movement_is_cyclic(const notation::Movement& m) {
 }
 
 glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const MirrorAxes& mirror,
-                          float s, const glm::vec3& reference) {
+                          float s, const glm::vec3& reference, const glm::vec3& outward) {
   const float R = movement_size_m(rig, m.size);
   glm::vec3 dir = mirrored_direction(rig, m.direction, mirror);
   if (glm::length(dir) < 0.5f) dir = rig.forward;
@@ -111,6 +111,10 @@ glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const Mir
         glm::vec3 longer = reject(mirrored_direction(rig, m.ellipse_axis, mirror), axis);
         if (glm::length(longer) > 0.2f) e1 = glm::normalize(longer);
       }
+      // A circle on the body: the start (at +e1, the centre at -e1) nearest the body. Only when
+      // the normal lies well in the circle's plane (a circle facing the body keeps its start).
+      if (m.kind == MovementKind::Circle && glm::length(reject(outward, axis)) > 0.5f)
+        e1 = -glm::normalize(reject(outward, axis));
       glm::vec3 e2 = glm::cross(axis, e1);
       // Looking along the axis, a positive (right-hand) rotation appears clockwise; a mirror image
       // turns the other way.

@@ -31,8 +31,14 @@ glm::vec3 mirrored_direction(const Rig& rig, notation::Direction d, const Mirror
 // Displacement of the hand from where the movement started, at path parameter s (model space).
 // `reference` is a direction perpendicular-ish to the path used when the movement leaves the
 // plane undefined (the hand's palm normal).
+// `outward` (unit, or zero): for a hand touching the body, the place's outward normal. A circle
+// whose plane holds that normal then starts at its point nearest the body (its centre off the
+// skin along the normal), so it brushes the body and goes round in front of it; started at its
+// top (the centre below, as without it) half the circle ran into the body (HAPPY's circle on the
+// chest 3.3 cm deep, the reference humanoid's forearm 8.9 mm in the torso). The sense of
+// rotation is kept.
 glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const MirrorAxes& mirror,
-                          float s, const glm::vec3& reference);
+                          float s, const glm::vec3& reference, const glm::vec3& outward = glm::vec3(0.0f));
 
 // Wrist motions (nod, swing, twist, circle): rotation in the hand's bind frame, right-multiplied
 // onto the hand delta. Identity for other kinds.

@@ -868,6 +868,18 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     std::vector<std::array<HandState, 2>> seg_start(steps), seg_goal(steps);
     // Per hand: whether an earlier step moved it away from its written location.
     std::array<bool, 2> relocated = {false, false};
+    // Per hand touching the body at its written place: the place's outward normal, which a
+    // circle there starts against (movement.h movement_offset; zero: none).
+    std::array<glm::vec3, 2> touch_outward = {glm::vec3(0.0f), glm::vec3(0.0f)};
+    for (int i = 0; i < 2; ++i) {
+      const Location& loc = plans[i].spec.location;
+      PartPoint place;
+      if (plans[i].active && loc.kind == Location::Kind::Body && loc.level != BodyLevel::NeutralSpace &&
+          is_touch(loc.contact) &&
+          anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(loc, plans[i].mirror_x), &place) &&
+          glm::length(place.normal) > 1e-6f)
+        touch_outward[i] = glm::normalize(place.normal);
+    }
     for (const Segment& seg : segments) {
       std::array<HandState, 2> from = state, goal = state;
       std::array<std::vector<Movement>, 2> ms;
@@ -991,16 +1003,17 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           HandState h = mix_state(from[i], goal[i], s);
           glm::vec3 reference = h.delta * rig.arms[plans[i].side].palm_normal;
           bool alt = i == 1 && plans[1].alternating;
+          const glm::vec3 outward = relocated[i] ? glm::vec3(0.0f) : touch_outward[i];
           for (const auto& m : ms[i]) {
             float ps = path_s;
             if (alt && movement_is_cyclic(m)) {
               float shifted = std::fmod(ps + 0.5f, 1.0f);
-              h.target += movement_offset(rig, m, plans[i].move_mirror, shifted, reference) -
-                          movement_offset(rig, m, plans[i].move_mirror, 0.5f, reference);
+              h.target += movement_offset(rig, m, plans[i].move_mirror, shifted, reference, outward) -
+                          movement_offset(rig, m, plans[i].move_mirror, 0.5f, reference, outward);
             } else if (alt) {
-              h.target -= movement_offset(rig, m, plans[i].move_mirror, ps, reference);
+              h.target -= movement_offset(rig, m, plans[i].move_mirror, ps, reference, outward);
             } else {
-              h.target += movement_offset(rig, m, plans[i].move_mirror, ps, reference);
+              h.target += movement_offset(rig, m, plans[i].move_mirror, ps, reference, outward);
             }
             // A wrist movement (nod, swing, twist, circle) turns the hand at the wrist: the
             // wrist stays where it is. Turning it about the contact part instead (the target is

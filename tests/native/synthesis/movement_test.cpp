@@ -149,6 +149,49 @@ TEST_F(SynthesisMovement, CirclesLieInTheirPlaneAndTurnTheRequestedWay) {
     }
 }
 
+// A circle drawn by a hand touching the body (HAPPY: the flat hand brushing the chest in small
+// circles about the left-right axis) starts at its point nearest the body: every point of the
+// path lies on the outward side of the start, and it still turns the written way. Started at its
+// top (the centre below it), half the circle ran 3.3 cm into the chest, and the reference
+// humanoid's forearm 8.9 mm into the torso. A normal along the axis (a circle facing the body)
+// leaves the path as it was.
+TEST_F(SynthesisMovement, ACircleOnTheBodyStartsAtItsPointNearestTheBody) {
+  const glm::vec3 outward = rig_.forward;  // the chest's normal
+  for (const Direction& axis : {Direction{1, 0, 0}, Direction{0, 1, 0}})
+    for (bool cw : {true, false}) {
+      Movement m;
+      m.kind = MovementKind::Circle;
+      m.circle_axis = axis;
+      m.clockwise = cw;
+      const glm::vec3 a = signer_dir(axis);
+      float behind = 0.0f, front = 0.0f, turning = 0.0f, turning_free = 0.0f;
+      glm::vec3 prev(0.0f), prev_free(0.0f);
+      for (int i = 0; i <= 64; ++i) {
+        const float s = static_cast<float>(i) / 64.0f;
+        const glm::vec3 o = movement_offset(rig_, m, {}, s, glm::vec3(0.0f), outward);
+        const glm::vec3 f = movement_offset(rig_, m, {}, s, glm::vec3(0.0f));
+        behind = std::min(behind, glm::dot(o, outward));
+        front = std::max(front, glm::dot(o, outward));
+        if (i > 0) {
+          turning += glm::dot(glm::cross(prev, o), a);
+          turning_free += glm::dot(glm::cross(prev_free, f), a);
+        }
+        prev = o;
+        prev_free = f;
+      }
+      const std::string what = std::string("axis ") + std::to_string(axis.x) + std::to_string(axis.y) + (cw ? " cw" : " ccw");
+      EXPECT_GT(behind, -1e-4f) << what << ": the circle goes into the body";
+      EXPECT_GT(front, 0.02f) << what << ": the circle goes round in front";
+      EXPECT_GT(turning * turning_free, 0.0f) << what << ": the sense changed";
+    }
+  // Facing the body (axis forward, the normal along it): as without a normal.
+  Movement m;
+  m.kind = MovementKind::Circle;
+  m.circle_axis = {0, 0, 1};
+  for (float s : {0.2f, 0.5f, 0.8f})
+    EXPECT_EQ(movement_offset(rig_, m, {}, s, glm::vec3(0.0f), outward), movement_offset(rig_, m, {}, s, glm::vec3(0.0f)));
+}
+
 TEST_F(SynthesisMovement, SizesAreRelativeToTheAvatar) {
   float extent[3];
   const notation::Size sizes[3] = {notation::Size::Small, notation::Size::Normal, notation::Size::Large};
