@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "synthesis/collision.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/phrase_text.h"
+#include "synthesis/sign_motion.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -413,6 +415,54 @@ TEST(SynthesisMovementTwoHands, HandsThatMeetAtTheGoalArePartedAlongTheMovement)
     EXPECT_LT(max_step, 0.02f) << name;
     EXPECT_LT(max_change, 0.015f) << name;
     EXPECT_GT(apart, 0.04f) << name;  // laid side by side, not in one place
+  }
+}
+
+}  // namespace
+}  // namespace sw::synthesis
+
+namespace sw::synthesis {
+namespace {
+
+using namespace testing;
+
+// Index fingers written crossed at one place (DIFFERENT: both palms at the centre, pointing
+// across, then apart). The hands overlap wholesale there; the escape rounds that lay the dominant
+// hand apart measured only it and the forearms, their pushes alternated up and down, and the left
+// hand stayed 15-24 mm in the right forearm. The frames pushed it out one by one (37-84 mm) and
+// its forearm swept through the right hand: 34.4 mm on the reference humanoid. Now the pair is
+// laid clear of both hands and both forearms at the key pose, and no frame of the sign (from
+// the key pose on, without the rest transitions) has either hand or forearm in the other.
+TEST(SynthesisMovementTwoHands, IndexFingersCrossedAtOnePlaceLeaveNeitherHandInTheOther) {
+  ProjectAvatar project = load_project_avatar();
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  std::vector<std::pair<std::string, avatar::Avatar>> rigs = {{"reference", make_reference_humanoid()}};
+  if (project.present) rigs.push_back({"avatar", project.avatar});
+  PhraseText t = phrase_from_text("R(H(finger2), E(lo), P(d), Loc(neutral, centre, close), M(straight, r)) Sym(lr)", {});
+  ASSERT_TRUE(t.ok());
+  for (const auto& [name, av] : rigs) {
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
+    SynthesisOptions o;
+    o.start_from_rest = false;
+    SynthesisResult r = synthesize_sign(t.items[0].sign, av, o);
+    ASSERT_TRUE(r.ok()) << name;
+    float worst = 0.0f;
+    std::string what;
+    for (int f = 0; f < r.clip.frame_count; ++f) {
+      PoseBuilder pb = frame_pose(ctx.rig, r.clip, f);
+      for (Side s : {kLeft, kRight}) {
+        for (const Penetration& p : {hand_penetration(ctx.body, pb, s, false, true),
+                                     arm_penetration(ctx.body, pb, s, false, false, true)})
+          if (p.depth_m > worst) {
+            worst = p.depth_m;
+            what = p.what + " at frame " + std::to_string(f);
+          }
+      }
+    }
+    EXPECT_LE(worst, 0.005f) << name << ": " << what;
+    EXPECT_LE(r.report.max_penetration_m, 0.005f) << name;
   }
 }
 
