@@ -865,8 +865,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     const bool arm_part = cpart == HandPlace::Elbow || cpart == HandPlace::Forearm ||
                           cpart == HandPlace::ForearmBack || cpart == HandPlace::UpperArm ||
                           cpart == HandPlace::ElbowInside;
-    const bool moves_place = (holds_still || arm_part) && ap.reach_error_m > kPlaceMissM;
-    for (int round = 0; moves_place && round < kPlaceRounds && ap.reach_error_m > kPlaceReachM; ++round) {
+    // So does a place whose hand reaches it only through the trunk (MORNING: the left hand in the
+    // crook of the right elbow, which hangs at the side of the body; the left arm reached across
+    // the whole torso, 96 mm in it at the key pose on the reference humanoid, cleared frame by
+    // frame to 4.9-7.0 mm over the frame rates and speeds): the place moves out by that arm's
+    // depth + kPlaceClearM and kPlaceForwardM forward, as for a miss (one round brings it to 0).
+    const bool moves_place = (holds_still || arm_part) && (ap.reach_error_m > kPlaceMissM || ap.trunk_depth_m > 0.005f);
+    for (int round = 0; moves_place && round < kPlaceRounds && (ap.reach_error_m > kPlaceReachM || ap.trunk_depth_m > 0.005f); ++round) {
       glm::vec3 residual = ap.contact_point - t.point;
       if (ap.trunk_depth_m > 0.0f) residual += (ap.trunk_depth_m + kPlaceClearM) * ap.trunk_push_dir;
       if (round == 0) residual += kPlaceForwardM * rig.forward;

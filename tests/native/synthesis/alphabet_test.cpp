@@ -213,8 +213,10 @@ TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
   ASSERT_TRUE(rig_error.empty()) << rig_error;
   // Known gaps, the worst of the nine settings as measured (mm, rounded up to 0.1). Within the
   // sign: DAY (the right upper arm in the torso, the elbow on the back of the other hand; 9.5 mm
-  // before the place came to the elbow, 5.6 now). Within the sign, varying with the frames: MORNING (the left forearm in
-  // the torso, the left hand in the crook of the right elbow). DIFFERENT (the crossed forearms at
+  // before the place came to the elbow, 5.6 now). MORNING (the left forearm in the torso, the
+  // left hand in the crook of the right elbow, 7.0 mm at 60 fps x 0.8) is clear at all nine
+  // since that place comes forward when the arm reaching it would be in the trunk
+  // (sign_motion.cpp). DIFFERENT (the crossed forearms at
   // the start of the movement and the end of the arriving transition, 13.4 mm at 60 fps x 1.25)
   // is clear at all nine since its key pair is laid clear of both hands and forearms
   // (sign_motion.cpp separate_crossed_hands). SAD and HAVE (forearms through each other in the arriving transition
@@ -224,7 +226,6 @@ TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
   // circle on the body starts at its point nearest the body (movement.h).
   const std::map<std::string, float> known_mm = {
       {"reference DAY", 5.7f},
-      {"reference MORNING", 7.1f},
   };
   float worst = 0.0f;
   for (const auto& rg : rigs) {
