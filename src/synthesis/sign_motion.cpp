@@ -1087,6 +1087,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         FrameTarget ft;
         for (int i = 0; i < 2; ++i) {
           HandState h = mix_state(from[i], goal[i], s);
+          const glm::vec3 state_target = h.target;  // before the path's offsets
           glm::vec3 reference = h.delta * rig.arms[plans[i].side].palm_normal;
           bool alt = i == 1 && plans[1].alternating;
           const glm::vec3 outward = relocated[i] ? glm::vec3(0.0f) : touch_outward[i];
@@ -1109,6 +1110,20 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             h.target += turned * h.offset - h.delta * h.offset;
             h.delta = turned;
             if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
+          }
+          if (wrist_led[i]) {
+            // The contact part on the arm (DAY's elbow) stays on its place and the wrist goes
+            // round it at the distance the key pose has: the movement turns the forearm about
+            // the elbow. The path's offset moves the wrist's direction from the elbow, not the
+            // elbow. Moved by the offset alone, DAY's arc down-left (12 cm) took the wrist 0.586 m
+            // from the shoulder joint on the reference humanoid, beyond the 0.55 m arm: the arm
+            // ran straight, the elbow slid 6 cm along the other hand and the upper arm went
+            // 5.6 mm into the torso.
+            const glm::vec3 path = h.target - state_target + wrist_from_contact[i];
+            const float forearm_m = glm::length(wrist_from_contact[i]);
+            if (forearm_m > 1e-4f)
+              h.target = state_target + forearm_m * safe_normalize(path, wrist_from_contact[i] / forearm_m) -
+                         wrist_from_contact[i];
           }
           ft.hand[i] = h;
         }

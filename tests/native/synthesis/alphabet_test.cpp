@@ -211,22 +211,17 @@ TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
   std::string rig_error;
   const testing::NamedRigs rigs = testing::reference_and_project_avatar(&rig_error);
   ASSERT_TRUE(rig_error.empty()) << rig_error;
-  // Known gaps, the worst of the nine settings as measured (mm, rounded up to 0.1). Within the
-  // sign: DAY (the right upper arm in the torso, the elbow on the back of the other hand; 9.5 mm
-  // before the place came to the elbow, 5.6 now). MORNING (the left forearm in the torso, the
-  // left hand in the crook of the right elbow, 7.0 mm at 60 fps x 0.8) is clear at all nine
-  // since that place comes forward when the arm reaching it would be in the trunk
-  // (sign_motion.cpp). DIFFERENT (the crossed forearms at
-  // the start of the movement and the end of the arriving transition, 13.4 mm at 60 fps x 1.25)
-  // is clear at all nine since its key pair is laid clear of both hands and forearms
-  // (sign_motion.cpp separate_crossed_hands). SAD and HAVE (forearms through each other in the arriving transition
-  // at some state counts: 7.2/10.4 mm on the reference, 5.5 mm on the project avatar) are clear
-  // now that a route's excess over its end poses adds the kinds (transition.cpp). HAPPY (the
-  // right forearm in the chest on its brushing circle, 9.9 mm at its worst) is clear since a
-  // circle on the body starts at its point nearest the body (movement.h).
-  const std::map<std::string, float> known_mm = {
-      {"reference DAY", 5.7f},
-  };
+  // Known gaps, the worst of the nine settings as measured (mm, rounded up to 0.1). None now on
+  // either rig; the reference humanoid's were, at their worst setting: DAY 5.6 (the upper arm
+  // across the chest as the wrist-led arc went beyond the arm's reach; the wrist now goes round
+  // the elbow), MORNING 7.0 (the left arm across the torso to the crook of the right elbow; that
+  // place now comes forward), HAPPY 9.9 (the brushing circle ran into the chest; it now starts at
+  // the chest), DIFFERENT 13.4 (crossed hands laid apart by alternating pushes; the pair is now
+  // laid clear of both hands and forearms), all in sign_motion.cpp / movement.cpp. SAD and HAVE
+  // (forearms through each other in the arriving transition at some state counts: 7.2/10.4 mm on
+  // the reference, 5.5 mm on the project avatar) are clear since a route's excess over its end
+  // poses adds the kinds (transition.cpp).
+  const std::map<std::string, float> known_mm = {};
   float worst = 0.0f;
   for (const auto& rg : rigs) {
     Synthesizer synth(rg.second);
@@ -275,20 +270,17 @@ TEST(SynthesisLexicon, EveryTouchReachesAndNoHandGoesIntoTheBodyOnBothRigs) {
   std::string rig_error;
   const testing::NamedRigs rigs = testing::reference_and_project_avatar(&rig_error);
   ASSERT_TRUE(rig_error.empty()) << rig_error;
-  // Known gaps (measured when this test was written; docs/SYNTHESIS.md, Known issues).
-  // Reach: DAY's right elbow on the back of the left hand (written in neutral space, beyond the
-  // upper arm's reach) touches since the place comes to it (sign_motion.cpp: 2.5 mm on the
-  // reference humanoid, 5.2 mm on the avatar; it missed by 116/78 mm). DEAF's index tip on the
-  // reference humanoid's ear missed by 21.6 mm (pointing up, the wrist inside the folded arm's
-  // reach) and CAT's by 9.8: the hand now tilts about the tip (arm_ik.h turn_hand_to_reach), 0.0.
-  // Depth: the right upper arm in the torso within DAY on the reference humanoid. DIFFERENT's
-  // right hand in the left forearm (34.4 mm) is clear since its key pair is laid clear of both
-  // hands and forearms (sign_motion.cpp separate_crossed_hands). HAPPY's forearm (8.9 mm) is clear since its circle starts at the chest
-  // and goes round in front of it (movement.h); HAVE's, SAD's and FAMILY's hands in each other
-  // on the way back to the rest are parted by the hands-apart route (transition.cpp).
+  // Known gaps (docs/SYNTHESIS.md, Known issues): none now on either rig. They were, on the
+  // reference humanoid: reach DEAF 21.6 mm and CAT 9.8 (the written orientation put the wrist
+  // inside the folded arm's reach; the hand now tilts about the tip, arm_ik.h turn_hand_to_reach);
+  // depth HAPPY 8.9 (circle into the chest), DAY 5.6 (upper arm across the chest), DIFFERENT 34.4
+  // (right hand in the left forearm). DAY's elbow on the back of the left hand (written in
+  // neutral space, beyond the upper arm's reach: it missed by 116/78 mm) touches since the place
+  // comes to it (5.7 mm on the reference humanoid, 5.2 on the avatar). HAVE's, SAD's and FAMILY's
+  // hands in each other on the way back to the rest are parted by the hands-apart route
+  // (transition.cpp).
   const std::map<std::string, float> known_reach_mm = {};
-  const std::map<std::string, float> known_depth_mm = {
-      {"reference DAY", 5.7f}};
+  const std::map<std::string, float> known_depth_mm = {};
   float worst_reach = 0.0f, worst_depth = 0.0f;
   for (const auto& rg : rigs) {
     Synthesizer synth(rg.second);
