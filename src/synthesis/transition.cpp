@@ -946,8 +946,10 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // depth plus a margin (sideways alone was a wash: the fingers still crossed in front). Where
   // the hands meet early on the way (SAD's spread hands just leaving the face), a waypoint at
   // 0.15 (alone, or paired with one at 0.5) parts them from the start: one at the worst state or
-  // two at 0.35/0.65 left SAD 14-16 mm; the pair at 10 cm takes it to 0 (without the single
-  // 0.15 in the list it ended at 14.7 mm: the candidate order matters, not yet understood).
+  // two at 0.35/0.65 left SAD 14-16 mm on the reference humanoid. What clears SAD is the single
+  // waypoint at 0.15 with the 10 cm margin (0.0 mm, the 13th candidate); the 0.15/0.5 pair at
+  // 10 cm leaves 15.9 mm. So without the single 0.15 SAD ends at 14.7 mm (the pair at 6 cm, the
+  // best of the rest): not the candidates' order, the one candidate that works removed.
   // (Only when a hand goes deeper than 5 mm at all: the hands' own scan poses every state again.)
   if (direct_depths.hand_m > 0.005f) {
     float hands_depth = 0.0f;
