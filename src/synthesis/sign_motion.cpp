@@ -100,6 +100,18 @@ struct HandState {
   float swivel = 0.4f;
 };
 
+// A movement's hand turn, seed 004's orientation change within a gesture (eq. (7)'s S_beg ->
+// S_end): a turn larger than kAmbiguousTurnRad (150 degrees) may go either way round
+// (choose_turn_direction), and no step turns the hand faster on average than
+// kMeanHandTurnRadPerS, so its minimum-jerk peak stays at 1.875 times that. 5 rad/s peaks at
+// 9.4 rad/s, under the 15 rad/s at which the per-frame solve takes a wrist change for a flip
+// (kWristFlipRadPerS) and within the 10-15 rad/s of a fast forearm rotation; measured on
+// STUDENT, 6 rad/s left the reference rig's wrist 47 mm a frame and the avatar's elbow jumping
+// (128 mm), 5 rad/s 40 mm and none; the written replace (0.35 s) turned 180 degrees at 9 rad/s
+// on average, 17 at the peak.
+constexpr float kAmbiguousTurnRad = 2.618f;
+constexpr float kMeanHandTurnRadPerS = 5.0f;
+
 HandState mix_state(const HandState& a, const HandState& b, float s) {
   HandState o;
   o.target = a.target + s * (b.target - a.target);
@@ -108,6 +120,19 @@ HandState mix_state(const HandState& a, const HandState& b, float s) {
   o.offset = a.offset + s * (b.offset - a.offset);
   o.swivel = a.swivel + s * (b.swivel - a.swivel);
   return o;
+}
+
+// The hand's turn from a to b, the other way round the same axis than slerp_shortest takes (the
+// angle 2*pi minus the short one). For a turn of about 180 degrees (a hand written fingers in,
+// palm down, turning to fingers out, palm to the side: STUDENT) the two ways are about as long,
+// and which one slerp_shortest takes is decided by the rounding of a dot product near 0, not by
+// what the arm can follow (choose_turn_direction).
+glm::quat slerp_other_way(const glm::quat& a, const glm::quat& b, float t) {
+  glm::quat bq = glm::dot(a, b) < 0.0f ? b : -b;  // the hemisphere slerp_shortest does not take
+  const float d = std::max(-1.0f, std::min(1.0f, glm::dot(a, bq)));
+  const float theta = std::acos(d), sin_theta = std::sin(theta);
+  if (sin_theta < 1e-6f) return slerp_shortest(a, b, t);
+  return glm::normalize(a * (std::sin((1.0f - t) * theta) / sin_theta) + bq * (std::sin(t * theta) / sin_theta));
 }
 
 struct HandPlan {
@@ -866,8 +891,43 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     std::vector<std::array<HandState, 2>> seg_start(steps), seg_goal(steps);
     // Per hand: whether an earlier step moved it away from its written location.
     std::array<bool, 2> relocated = {false, false};
+    // Which way round a hand turns from `from` to `goal` (true: the other way than
+    // slerp_shortest). A turn of more than kAmbiguousTurnRad can go either way at nearly the same
+    // length; the way the arm follows is the one the IK reaches best at a quarter, half and three
+    // quarters of the way (3 * orientation error + 20 * reach error + the body cost, the swivel
+    // choice's units, arm_ik.h). STUDENT's two 180-degree turns (the pinched hand from the left
+    // palm, fingers down, to the forehead, fingers in; then to fingers out, palm left) went the
+    // way the rounding chose: on the project avatar through orientations 90+ degrees out of the
+    // wrist's reach, so the wrist held and then swung round the fingertip (98 mm in a frame).
+    auto choose_turn_direction = [&](int i, const std::array<HandState, 2>& from,
+                                     const std::array<HandState, 2>& goal) {
+      const float short_turn = rotation_angle(glm::conjugate(from[i].delta) * goal[i].delta);
+      if (short_turn < kAmbiguousTurnRad) return false;
+      const HandPlan& op = plans[1 - i];
+      glm::vec3 place(0.0f);
+      if (plans[i].on_other_hand && op.active)
+        place = other_hand_point(solver, plans[i], op, key[1 - i], plans[i].place, plans[i].place_finger,
+                                 plans[i].place_distance_m);
+      float cost[2] = {0.0f, 0.0f};
+      for (int way = 0; way < 2; ++way)
+        for (float s : {0.25f, 0.5f, 0.75f}) {
+          const HandState h = mix_state(from[i], goal[i], s);
+          ArmTarget t;
+          t.point = h.target + place;
+          t.contact_offset = h.offset;
+          t.hand_delta = way ? slerp_other_way(from[i].delta, goal[i].delta, s) : h.delta;
+          t.auto_swivel = false;
+          t.swivel_rad = h.swivel;
+          t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+          t.hand_contact = plans[i].exempt_trunk;
+          const ArmPose ap = solve_arm(rig, plans[i].side, t);
+          cost[way] += 3.0f * ap.orientation_error_rad + 20.0f * ap.reach_error_m + ap.body_cost;
+        }
+      return cost[1] < cost[0];
+    };
     for (const Segment& seg : segments) {
       std::array<HandState, 2> from = state, goal = state;
+      std::array<bool, 2> other_way = {false, false};  // the hand turns the other way round
       std::array<std::vector<Movement>, 2> ms;
       float duration = 0.3f, hold = 0.0f;
       if (seg.back_to_start) {
@@ -974,6 +1034,15 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         // 86 mm change of step on the avatar). Decided at the goal, it is interpolated along the
         // movement like the rest of the state.
         if (goal_changed) separate_crossed_hands(solver, plans, &goal, &from);
+        for (int i = 0; i < 2; ++i) {
+          if (!plans[i].active || !goal_changed) continue;
+          other_way[i] = choose_turn_direction(i, from, goal);
+          // A wrist turns at a human speed: the step lasts at least its turn at
+          // kMeanHandTurnRadPerS (the minimum-jerk peak is 1.875 times that).
+          float turn = rotation_angle(glm::conjugate(from[i].delta) * goal[i].delta);
+          if (other_way[i]) turn = 6.28318531f - turn;
+          duration = std::max(duration, turn / kMeanHandTurnRadPerS);
+        }
         for (int i = 0; i < 2; ++i)
           for (const auto& m : ms[i]) relocated[i] = relocated[i] || m.to_location.has_value();
         seg_start[seg.step] = from;
@@ -987,6 +1056,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         FrameTarget ft;
         for (int i = 0; i < 2; ++i) {
           HandState h = mix_state(from[i], goal[i], s);
+          if (other_way[i]) h.delta = slerp_other_way(from[i].delta, goal[i].delta, s);
           glm::vec3 reference = h.delta * rig.arms[plans[i].side].palm_normal;
           bool alt = i == 1 && plans[1].alternating;
           for (const auto& m : ms[i]) {
