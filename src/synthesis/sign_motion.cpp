@@ -1074,7 +1074,18 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             // wrist stays where it is. Turning it about the contact part instead (the target is
             // where that part goes) swung the wrist around the palm (Й's twist: the wrist's
             // per-frame step changed by 73 mm from one frame to the next).
-            const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, ps);
+            //
+            // Nods, swings and circles cycle at a constant rate (wrist_motion's phase is the
+            // step's time): on the minimum-jerk path parameter the middle cycle ran 1.9 times
+            // faster than the others and WALK's flapping fingertips changed their step by 72 mm.
+            // A twist keeps the path parameter: it drives the forearm's rotation into its limit
+            // (Й: E(u), P(o)), where the clamped wrist angles change branch; at a constant rate
+            // the change stays under the flip threshold (kWristFlipRadPerS) and passes
+            // unfiltered (Й's ring tip 46 -> 81 mm change of step), while the warped middle is
+            // caught as a flip and turned through at kWristTurnRadPerS.
+            const float time_s = static_cast<float>(f) / n;
+            const float phase = m.kind == MovementKind::WristTwist ? ps : seg.reversed ? 1.0f - time_s : time_s;
+            const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, phase);
             h.target += turned * h.offset - h.delta * h.offset;
             h.delta = turned;
             if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
