@@ -923,7 +923,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           const ArmPose ap = solve_arm(rig, plans[i].side, t);
           cost[way] += 3.0f * ap.orientation_error_rad + 20.0f * ap.reach_error_m + ap.body_cost;
         }
-      return cost[1] < cost[0];
+      // The other way only when it is clearly better: near a tie the choice would follow the
+      // rounding of the solves (native and WebAssembly must make the same clip).
+      return cost[1] < cost[0] - 0.01f;
     };
     for (const Segment& seg : segments) {
       std::array<HandState, 2> from = state, goal = state;
@@ -1034,19 +1036,21 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         // 86 mm change of step on the avatar). Decided at the goal, it is interpolated along the
         // movement like the rest of the state.
         if (goal_changed) separate_crossed_hands(solver, plans, &goal, &from);
-        for (int i = 0; i < 2; ++i) {
-          if (!plans[i].active || !goal_changed) continue;
-          other_way[i] = choose_turn_direction(i, from, goal);
-          // A wrist turns at a human speed: the step lasts at least its turn at
-          // kMeanHandTurnRadPerS (the minimum-jerk peak is 1.875 times that).
-          float turn = rotation_angle(glm::conjugate(from[i].delta) * goal[i].delta);
-          if (other_way[i]) turn = 6.28318531f - turn;
-          duration = std::max(duration, turn / kMeanHandTurnRadPerS);
-        }
         for (int i = 0; i < 2; ++i)
           for (const auto& m : ms[i]) relocated[i] = relocated[i] || m.to_location.has_value();
         seg_start[seg.step] = from;
         seg_goal[seg.step] = goal;
+      }
+      // Every segment (a step, its retrace, the return of a repetition from the start): the
+      // hand's turn goes the way the arm reaches, and lasts at least its turn at
+      // kMeanHandTurnRadPerS (the minimum-jerk peak is 1.875 times that). A retrace samples the
+      // same states as its step, so it takes the same way back.
+      for (int i = 0; i < 2; ++i) {
+        if (!plans[i].active) continue;
+        other_way[i] = choose_turn_direction(i, from, goal);
+        float turn = rotation_angle(glm::conjugate(from[i].delta) * goal[i].delta);
+        if (other_way[i]) turn = 6.28318531f - turn;
+        duration = std::max(duration, turn / kMeanHandTurnRadPerS);
       }
       int n = std::max(2, static_cast<int>(std::lround(duration * fps / speed)));
       std::array<HandState, 2> last = from;
