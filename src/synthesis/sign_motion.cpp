@@ -105,10 +105,11 @@ struct HandState {
 // (choose_turn_direction), and no step turns the hand faster on average than
 // kMeanHandTurnRadPerS, so its minimum-jerk peak stays at 1.875 times that. 5 rad/s peaks at
 // 9.4 rad/s, under the 15 rad/s at which the per-frame solve takes a wrist change for a flip
-// (kWristFlipRadPerS) and within the 10-15 rad/s of a fast forearm rotation; measured on
-// STUDENT, 6 rad/s left the reference rig's wrist 47 mm a frame and the avatar's elbow jumping
-// (128 mm), 5 rad/s 40 mm and none; the written replace (0.35 s) turned 180 degrees at 9 rad/s
-// on average, 17 at the peak.
+// (kWristFlipRadPerS) and within the 10-15 rad/s of a fast forearm rotation. The written
+// replace (0.35 s) turned 180 degrees at 9 rad/s on average, 17 at the peak. Measured on
+// STUDENT with the way round chosen: 6 rad/s, wrist or elbow steps up to 42 mm (avatar) / 48 mm
+// (reference); 5 rad/s, 40 / 41 mm (with the rounding's way round, 6 rad/s left the avatar's
+// elbow jumping 128 mm).
 constexpr float kAmbiguousTurnRad = 2.618f;
 constexpr float kMeanHandTurnRadPerS = 5.0f;
 
