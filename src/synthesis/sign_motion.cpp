@@ -15,6 +15,7 @@
 #include "synthesis/hand_parts.h"
 #include "synthesis/movement.h"
 #include "synthesis/orientation.h"
+#include "synthesis/thorax_turn.h"
 
 namespace sw::synthesis {
 
@@ -148,10 +149,30 @@ struct Solver {
   PoseBuilder bind_pose;
   std::array<ArmPose, 2> rest_arm;
   HandAngles rest_angles;
+  // The sign's thorax turn (none unless set_thorax_turn) and the turned body its anchors are on.
+  ThoraxTurn turn;
+  PoseBuilder turned_pose;
 
   Solver(const SynthContext& c, std::vector<SynthesisError>* e, std::string w)
-      : ctx(c), rig(c.rig), errors(e), where(std::move(w)), bind_pose(c.rig) {
+      : ctx(c), rig(c.rig), errors(e), where(std::move(w)), bind_pose(c.rig), turned_pose(c.rig) {
     bind_pose.finalize();
+  }
+
+  void set_thorax_turn(const ThoraxTurn& t) {
+    turn = t;
+    turned_pose = PoseBuilder(rig);
+    pose_thorax_turn(rig, turn, &turned_pose);
+    turned_pose.finalize();
+  }
+
+  // A body anchor as the sign is solved: on the bind pose, or with a thorax turn on the turned
+  // body, seen in the thorax frame (thorax_turn.h).
+  bool body_anchor(const std::string& name, PartPoint* p) const {
+    if (!turn.active()) return anchor_point(*ctx.avatar, bind_pose, name, p);
+    if (!anchor_point(*ctx.avatar, turned_pose, name, p)) return false;
+    p->point = turn.to_thorax_point(p->point);
+    p->normal = turn.to_thorax_dir(p->normal);
+    return true;
   }
 
   glm::vec3 part_offset(Side side, const HandAngles& angles, HandPlace place, int finger) const {
@@ -181,7 +202,7 @@ struct Solver {
   bool body_target(const HandPlan& plan, const Location& loc, glm::vec3* target, PartPoint* anchor) {
     std::string name = body_anchor_name(loc, plan.mirror_x);
     PartPoint p;
-    if (!anchor_point(*ctx.avatar, bind_pose, name, &p)) {
+    if (!body_anchor(name, &p)) {
       errors->push_back({where + (plan.side == kRight ? " right" : " left") + " hand location",
                          "the avatar has no body anchor '" + name + "'"});
       return false;
@@ -628,6 +649,59 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   return plans;
 }
 
+// The thorax turn for a one-handed sign whose hand is placed on or beside the FAR side of the
+// body from the stomach down (the right hand at the left hip): the arm reaches across the belly
+// and, with the trunk unturned, lay in it however the place was held off and the elbow swung
+// (a fist touching beside the far side below the waist: upper arm 61-79 mm in the torso).
+// A signer turns the upper body towards that side, which brings the place forward of the
+// reaching shoulder. kFarSideThoraxTurnRad: 20 degrees, about half the thoracolumbar axial
+// rotation a standing adult has each way (about 35-45 degrees, most of it thoracic), so a
+// reach, not a twist to the limit. Zero (no turn) for every other sign.
+constexpr float kFarSideThoraxTurnRad = 0.35f;
+
+float far_side_thorax_turn_rad(const SynthContext& ctx, const std::array<HandPlan, 2>& plans) {
+  if (!ctx.options.avoid_collisions) return 0.0f;
+  const HandPlan& d = plans[0];
+  if (!d.active || plans[1].active || d.on_other_hand) return 0.0f;
+  const Location& loc = d.spec.location;
+  if (loc.kind != Location::Kind::Body) return 0.0f;
+  if (!Solver::far_side_beside(d, loc) && !Solver::far_side_place(d, loc)) return 0.0f;
+  if (static_cast<int>(loc.level) < static_cast<int>(BodyLevel::Stomach) ||
+      static_cast<int>(loc.level) > static_cast<int>(BodyLevel::BelowWaist))
+    return 0.0f;
+  // Towards the far side: the right hand's shoulder forward is a positive turn about up.
+  return d.side == kRight ? kFarSideThoraxTurnRad : -kFarSideThoraxTurnRad;
+}
+
+// How far a one-handed sign's key pose (plans[0]'s hand at `st`, the other arm at rest) is
+// in the body, as the sign's frames pose it: the arm and the hand in the trunk (the hand not when
+// it touches on purpose), plus, for a touch, how far it stops short of its place beyond 5 mm.
+float key_pose_depth(Solver& solver, const std::array<HandPlan, 2>& plans, const HandState& st) {
+  const SynthContext& ctx = solver.ctx;
+  const Rig& rig = ctx.rig;
+  const HandPlan& plan = plans[0];
+  const bool touch = is_touch(plan.spec.location.contact);
+  ArmTarget t;
+  t.point = st.target;
+  t.contact_offset = st.offset;
+  t.hand_delta = st.delta;
+  t.auto_swivel = false;
+  t.swivel_rad = st.swivel;
+  t.body = &ctx.body;
+  t.hand_contact = touch;
+  const ArmPose ap = solve_arm(rig, plan.side, t);
+  PoseBuilder rest(rig);
+  rest.set_from_local(ctx.rest_locals.data());
+  PoseBuilder pb(rig);
+  pose_arm_at_rest(rig, rest, plans[1].side, glm::quat(1, 0, 0, 0), &pb);
+  apply_arm(rig, plan.side, ap, &pb);
+  pose_fingers(rig, plan.side, st.angles, ap.hand, &pb);
+  pb.finalize();
+  float depth = arm_penetration(ctx.body, pb, plan.side, true, touch, false).depth_m;
+  if (!touch) depth = std::max(depth, hand_penetration(ctx.body, pb, plan.side, true, false).depth_m);
+  return depth + (touch ? std::max(0.0f, ap.reach_error_m - 0.005f) : 0.0f);
+}
+
 }  // namespace
 
 std::string body_anchor_name(const Location& loc, bool mirror_x) {
@@ -726,6 +800,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   constexpr float kPlaceMissM = 0.01f, kPlaceReachM = 0.002f, kPlaceClearM = 0.02f;
   constexpr float kPlaceForwardM = 0.05f;
   constexpr int kPlaceRounds = 3;
+  // A one-handed sign's hand low on the far side of the body turns the thorax towards it.
+  const float thorax_turn = far_side_thorax_turn_rad(ctx, plans);
   // Solve order: a hand that is the place of the other goes first.
   std::array<int, 2> order = {0, 1};
   if (plans[0].on_other_hand) order = {1, 0};
@@ -744,6 +820,19 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i] = solver.key_state(plans[i], plans[i].spec, &ok, nullptr);
   }
   if (errors->size() > before) return false;
+  // The turn is taken where it takes the key pose less deep into the body (or a touch nearer its
+  // place), which is most of those places (docs/SYNTHESIS.md, Known issues, the figures): the
+  // key state is solved again in the turned body's frame and the two compared.
+  if (thorax_turn != 0.0f) {
+    const float plain = key_pose_depth(solver, plans, key[0]);
+    solver.set_thorax_turn(make_thorax_turn(rig, thorax_turn));
+    bool ok = true;
+    const HandState turned = solver.key_state(plans[0], plans[0].spec, &ok, nullptr);
+    if (ok && key_pose_depth(solver, plans, turned) < plain - 0.0005f)
+      key[0] = turned;
+    else
+      solver.set_thorax_turn(ThoraxTurn{});
+  }
   // A hand placed on the other hand had the default swivel (key_state cannot know where that
   // place is): MORNING's left hand in the crook of the right elbow was held with its elbow down
   // into the body and the per-frame clearing flipped it between two swivels (45 cm in a frame).
@@ -1268,7 +1357,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           if (plan.on_other_hand) {
             anchor = solver.other_hand_place(pb, plan);
           } else if (plan.spec.location.kind == Location::Kind::Body) {
-            if (!anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
+            if (!solver.body_anchor(body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
               continue;
           } else {
             continue;
@@ -1363,6 +1452,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         push_offsets[f][i] = glm::vec3(0.0f);
       }
   }
+  // Solved in the thorax frame: the clip's frames carry the turn in the trunk chain.
+  if (solver.turn.active())
+    for (int f = 0; f < out->frame_count; ++f)
+      apply_thorax_turn(rig, solver.turn, &out->rotations[static_cast<size_t>(f) * J]);
   return true;
 }
 
