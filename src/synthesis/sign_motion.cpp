@@ -377,10 +377,18 @@ struct Solver {
                spec.location.level == BodyLevel::ShoulderTop) {
         const glm::vec3 written = st.target;
         const ArmRig& arm = rig.arms[plan.side];
-        // Scored on the whole rest pose with the arm solved into it (the finger joints an arm
-        // solve leaves keep their rest rotations): posed as the sign's frames pose it instead,
-        // every candidate's arm measured 38-54 mm and the fist held off the far shoulder top
-        // went from 13 to 38 mm. Not yet understood; the figure is held by HandsAcrossTheBody.
+        // Scored on the whole rest pose with the arm solved into it, where the joints an arm
+        // solve leaves (the finger metacarpals) keep the hanging hand's rotations, so the hand's
+        // depth scored here is not the sign's (the project avatar's fist held off, fingers
+        // across: 52-83 mm, the fingers hanging below the wrist; posed as the frames pose it,
+        // 0-25 mm). Why no better score is used: the key pose does not decide the clip. As
+        // solved, every candidate's forearm is 49-61 mm in the far torso half; turned out of the
+        // body (turn_hand_out_of_body, below) the pointing hand's still 17-120 mm; the clip's
+        // figure (13.0 mm) is what the per-frame corrections (pushes, swivel fixes, turns) make
+        // of the pick. Scored after the turn and posed as the frames pose it, the fist went
+        // 13.0 -> 17.0 mm and the pointing hand 10.7 -> 29.5 mm; posed right without the turn,
+        // 13 -> 38 mm. The pick is kept (held by HandsAcrossTheBody) until a score of the
+        // corrected frames replaces it.
         PoseBuilder posed(rig);
         auto cost = [&](const ArmPose& p, glm::vec3 target) {
           posed.set_from_local(ctx.rest_locals.data());
