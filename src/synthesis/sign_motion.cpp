@@ -666,6 +666,15 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
 // rotation a standing adult has each way (about 35-45 degrees, most of it thoracic), so a
 // reach, not a twist to the limit. Zero (no turn) for every other sign.
 constexpr float kFarSideThoraxTurnRad = 0.35f;
+// With the turn, the trunk may also lean forward 0.2 rad (11 degrees; trunk flexion goes to
+// 60-90), which lowers the shoulder towards a place below the waist (measured: the reference
+// humanoid's fists touching beside the far side below the waist 37.8 / 36.5 -> 7.6 / 3.3 mm;
+// 0.1 rad 21.5 / 14.8, 0.3 and 0.4 no better on the project avatar). Only below the waist: at
+// the waist and belly the place is within the arm's reach and leaning put the clips deeper
+// (the reference humanoid's fist touching beside the waist 14.1 -> 17.2 mm, the belly 4.6 ->
+// 8.3), though their key poses as scored measured shallower. A side bend towards the far side
+// instead raised the reaching shoulder (0.1 rad: 37.8 -> 40.3 mm below the waist).
+constexpr float kFarSideLeanRad = 0.2f;
 
 float far_side_thorax_turn_rad(const SynthContext& ctx, const std::array<HandPlan, 2>& plans) {
   if (!ctx.options.avoid_collisions) return 0.0f;
@@ -831,15 +840,26 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // The turn is taken where it takes the key pose less deep into the body (or a touch nearer its
   // place), which is most of those places (docs/SYNTHESIS.md, Known issues, the figures): the
   // key state is solved again in the turned body's frame and the two compared.
+  // Turned alone, and below the waist also leaning forward (kFarSideLeanRad); the shallowest
+  // wins, the unturned pose unless a turn gains half a millimetre.
   if (thorax_turn != 0.0f) {
-    const float plain = key_pose_depth(solver, plans, key[0]);
-    solver.set_thorax_turn(make_thorax_turn(rig, thorax_turn));
-    bool ok = true;
-    const HandState turned = solver.key_state(plans[0], plans[0].spec, &ok, nullptr);
-    if (ok && key_pose_depth(solver, plans, turned) < plain - 0.0005f)
-      key[0] = turned;
-    else
-      solver.set_thorax_turn(ThoraxTurn{});
+    float best = key_pose_depth(solver, plans, key[0]) - 0.0005f;
+    ThoraxTurn chosen;
+    const bool below_waist = plans[0].spec.location.level == BodyLevel::BelowWaist;
+    for (float lean : {0.0f, kFarSideLeanRad}) {
+      if (lean != 0.0f && !below_waist) continue;
+      const ThoraxTurn turn = make_thorax_turn(rig, thorax_turn, lean);
+      solver.set_thorax_turn(turn);
+      bool ok = true;
+      const HandState turned = solver.key_state(plans[0], plans[0].spec, &ok, nullptr);
+      const float depth = ok ? key_pose_depth(solver, plans, turned) : best;
+      if (depth < best) {
+        best = depth;
+        key[0] = turned;
+        chosen = turn;
+      }
+    }
+    solver.set_thorax_turn(chosen);
   }
   // A hand placed on the other hand had the default swivel (key_state cannot know where that
   // place is): MORNING's left hand in the crook of the right elbow was held with its elbow down

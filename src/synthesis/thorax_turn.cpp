@@ -11,16 +11,16 @@ glm::quat thorax_turn_share(const ThoraxTurn& turn, float s) {
   return glm::angleAxis(s * angle, axis);
 }
 
-ThoraxTurn make_thorax_turn(const Rig& rig, float angle_rad, float bend_rad) {
+ThoraxTurn make_thorax_turn(const Rig& rig, float angle_rad, float lean_rad) {
   ThoraxTurn t;
   for (int j : {rig.spine, rig.chest, rig.upper_chest})
     if (j >= 0) t.chain.push_back(j);
   if (t.chain.empty()) return t;
   t.angle_rad = angle_rad;
-  t.bend_rad = bend_rad;
+  t.lean_rad = lean_rad;
   t.top = t.chain.back();
-  // A bend towards the left is a rotation about -forward (up towards left); then the twist.
-  t.rotation = glm::normalize(axis_angle(-rig.forward, bend_rad) * axis_angle(rig.up, angle_rad));
+  // The twist, then the lean: about the body's left axis, up tips towards forward.
+  t.rotation = glm::normalize(axis_angle(rig.left, lean_rad) * axis_angle(rig.up, angle_rad));
   PoseBuilder pb(rig);
   pose_thorax_turn(rig, t, &pb);
   pb.finalize();

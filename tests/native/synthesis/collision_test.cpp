@@ -379,7 +379,7 @@ void crossing_arm_depths(const SynthContext& ctx, const SynthesisResult& r, Side
 // 31.3 / 19.2), below the waist 26.6 / 17.5 mm; the project avatar's below the waist 56.6 /
 // 57.3 mm. From the stomach down the thorax now turns towards the far side (thorax_turn.h):
 // before it, the reference humanoid's waist 9.7 mm (close, none), the project avatar below the
-// waist 8.0 mm (touch) and its touch beside the waist 14.5 mm short; now 1.0 / 0.9 mm and 1.4 mm.
+// waist 8.0 mm (touch) and its touch beside the waist 14.5 mm short; now 1.0 / 0.0 mm and 1.4 mm.
 // Bounds: 5 mm (the rule) except where measured deeper, rounded up, per rig.
 TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
   struct Bounds { float touch_mm, close_mm, none_mm; };  // key pose and clip
@@ -544,42 +544,43 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
 // torso right" in most) or the forearm across the far side. The flat hand touches with its middle
 // fingertip, the wrist a hand's length lower, and stays within 5 mm (HandBesideTheFarSide...);
 // the fist touches with the palm. From the stomach down the thorax turns towards the far side
-// (thorax_turn.h), which brings the place forward of the reaching shoulder; before it (fingers up
-// / across) the reference humanoid's stomach 18.6 / 14.9 mm, belly 29.9 / 21.3, waist 41.2 /
-// 35.4, below the waist 61.5 / 63.1; the project avatar's belly 4.2 / 5.7, waist 11.1 / 13.2,
-// below the waist 72.0 / 79.3 mm. Higher up a turn would carry the place with the chest (those
-// anchors are on the upper chest) and change nothing. Each case over 5 mm is held to its depth
-// as measured, rounded up to the next half millimetre; the others to 5 mm. Below the waist the
-// project avatar's fist also stops short of the place (before the turn 44.8 / 31.2 mm, now
-// 29.4 / 24.1 mm: the arm at full stretch 28 cm across the hips), held too.
+// (thorax_turn.h), and below the waist also leans forward, which brings the place forward of
+// (and nearer to) the reaching shoulder; before (fingers up / across) the reference humanoid's
+// stomach 18.6 / 14.9 mm, belly 29.9 / 21.3, waist 41.2 / 35.4, below the waist 61.5 / 63.1; the
+// project avatar's belly 4.2 / 5.7, waist 11.1 / 13.2, below the waist 72.0 / 79.3 mm. Higher up
+// a turn would carry the place with the chest (those anchors are on the upper chest) and change
+// nothing. Each case over 5 mm is held to its depth as measured, rounded up to the next half
+// millimetre; the others to 5 mm. Below the waist the project avatar's fist also stops short of
+// the place (before 44.8 / 31.2 mm, now 18.1 / 17.0 mm: the arm at full stretch 28 cm across the
+// hips), held too.
 TEST(SynthesisCollision, FistsTouchingBesideTheFarSideAreHeldToTheirMeasuredDepth) {
   struct Gap { float fingers_up_mm, across_mm; };
   struct Rig_ { std::string name; avatar::Avatar avatar; std::map<BodyLevel, Gap> known; float below_waist_short_mm; };
   std::vector<Rig_> rigs;
   // Reference humanoid (measured, fingers up / across): neck 13.4 / 3.8, shoulders 17.3 / 7.4,
   // shoulder top 14.2 / 4.4, chest 16.2 / 13.0, stomach 4.3 / 3.7, belly 4.6 / 4.4,
-  // waist 14.1 / 12.4, below the waist 37.8 / 36.5 mm.
+  // waist 14.1 / 12.4, below the waist 7.6 / 3.3 mm.
   rigs.push_back({"reference", make_reference_humanoid(),
                   {{BodyLevel::Neck, {13.5f, 5.0f}},
                    {BodyLevel::Shoulders, {17.5f, 7.5f}},
                    {BodyLevel::ShoulderTop, {14.5f, 5.0f}},
                    {BodyLevel::Chest, {16.5f, 13.5f}},
                    {BodyLevel::Waist, {14.5f, 12.5f}},
-                   {BodyLevel::BelowWaist, {38.0f, 37.0f}}},
+                   {BodyLevel::BelowWaist, {8.0f, 5.0f}}},
                   0.0f});
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
   // Project avatar (fingers up / across): neck 2.8 / 12.7, shoulders 14.9 / 13.2, shoulder top
-  // 7.6 / 18.1, chest 8.1 / 4.5, belly 1.8 / 0.4, waist 1.0 / 1.0, below the waist 49.2 /
-  // 56.1 mm.
+  // 7.6 / 18.1, chest 8.1 / 4.5, belly 1.8 / 0.4, waist 1.0 / 1.0, below the waist 42.1 /
+  // 44.2 mm.
   if (project.present)
     rigs.push_back({"avatar", std::move(project.avatar),
                     {{BodyLevel::Neck, {5.0f, 13.0f}},
                      {BodyLevel::Shoulders, {15.0f, 13.5f}},
                      {BodyLevel::ShoulderTop, {8.0f, 18.5f}},
                      {BodyLevel::Chest, {8.5f, 5.0f}},
-                     {BodyLevel::BelowWaist, {49.5f, 56.5f}}},
-                    30.0f});
+                     {BodyLevel::BelowWaist, {42.5f, 44.5f}}},
+                    18.5f});
   const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,        BodyLevel::Mouth,
                               BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
                               BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
