@@ -657,14 +657,16 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   return plans;
 }
 
-// The thorax turn for a one-handed sign whose hand is placed on or beside the FAR side of the
-// body from the stomach down (the right hand at the left hip): the arm reaches across the belly
-// and, with the trunk unturned, lay in it however the place was held off and the elbow swung
-// (a fist touching beside the far side below the waist: upper arm 61-79 mm in the torso).
-// A signer turns the upper body towards that side, which brings the place forward of the
-// reaching shoulder. kFarSideThoraxTurnRad: 20 degrees, about half the thoracolumbar axial
-// rotation a standing adult has each way (about 35-45 degrees, most of it thoracic), so a
-// reach, not a twist to the limit. Zero (no turn) for every other sign.
+// The body's turns a one-handed sign may take for a hand on or beside the FAR side of the body
+// (far_side_turns; each is taken only where its key pose measures shallower, below).
+//
+// From the stomach down (the right hand at the left hip) the arm reaches across the belly and,
+// with the trunk unturned, lay in it however the place was held off and the elbow swung (a fist
+// touching beside the far side below the waist: upper arm 61-79 mm in the torso). A signer
+// turns the upper body towards that side, which brings the place forward of the reaching
+// shoulder. kFarSideThoraxTurnRad: 20 degrees, about half the thoracolumbar axial rotation a
+// standing adult has each way (about 35-45 degrees, most of it thoracic), so a reach, not a
+// twist to the limit.
 constexpr float kFarSideThoraxTurnRad = 0.35f;
 // With the turn, the trunk may also lean forward 0.2 rad (11 degrees; trunk flexion goes to
 // 60-90), which lowers the shoulder towards a place below the waist (measured: the reference
@@ -675,19 +677,35 @@ constexpr float kFarSideThoraxTurnRad = 0.35f;
 // 8.3), though their key poses as scored measured shallower. A side bend towards the far side
 // instead raised the reaching shoulder (0.1 rad: 37.8 -> 40.3 mm below the waist).
 constexpr float kFarSideLeanRad = 0.2f;
+// At the far ear (the right hand at the left ear) the forearm crossed the face into the head
+// (the project avatar 14-41 mm, the reference humanoid's fist touching 13.7 mm): the head turns
+// towards the reaching hand and presents the ear, 0.4 rad (23 degrees; the neck turns 70-80 each
+// way). Measured over the ears' 15 cases a rig (5 hands x touch, close, none): 0.2 rad left the
+// avatar at 38 mm, 0.4 rad at 17.5, 0.6 rad at 10.7 with a third of the turn more; the thorax
+// turn does not help there (the head's anchors turn with the chest, less the neck's give-back).
+// The eyes keep their gaze (the face layer counter-rotates them).
+constexpr float kFarEarHeadTurnRad = 0.4f;
 
-float far_side_thorax_turn_rad(const SynthContext& ctx, const std::array<HandPlan, 2>& plans) {
-  if (!ctx.options.avoid_collisions) return 0.0f;
+std::vector<ThoraxTurn> far_side_turns(const SynthContext& ctx, const std::array<HandPlan, 2>& plans) {
+  std::vector<ThoraxTurn> turns;
+  if (!ctx.options.avoid_collisions) return turns;
   const HandPlan& d = plans[0];
-  if (!d.active || plans[1].active || d.on_other_hand) return 0.0f;
+  if (!d.active || plans[1].active || d.on_other_hand) return turns;
   const Location& loc = d.spec.location;
-  if (loc.kind != Location::Kind::Body) return 0.0f;
-  if (!Solver::far_side_beside(d, loc) && !Solver::far_side_place(d, loc)) return 0.0f;
-  if (static_cast<int>(loc.level) < static_cast<int>(BodyLevel::Stomach) ||
-      static_cast<int>(loc.level) > static_cast<int>(BodyLevel::BelowWaist))
-    return 0.0f;
-  // Towards the far side: the right hand's shoulder forward is a positive turn about up.
-  return d.side == kRight ? kFarSideThoraxTurnRad : -kFarSideThoraxTurnRad;
+  if (loc.kind != Location::Kind::Body) return turns;
+  // Towards the far side: the right hand's shoulder forward is a positive turn about up; the
+  // head towards the right hand a negative one.
+  const float towards_far = d.side == kRight ? 1.0f : -1.0f;
+  const bool far = Solver::far_side_beside(d, loc) || Solver::far_side_place(d, loc);
+  if (far && static_cast<int>(loc.level) >= static_cast<int>(BodyLevel::Stomach) &&
+      static_cast<int>(loc.level) <= static_cast<int>(BodyLevel::BelowWaist)) {
+    turns.push_back(make_thorax_turn(ctx.rig, towards_far * kFarSideThoraxTurnRad));
+    if (loc.level == BodyLevel::BelowWaist)
+      turns.push_back(make_thorax_turn(ctx.rig, towards_far * kFarSideThoraxTurnRad, kFarSideLeanRad));
+  }
+  if (Solver::far_side_place(d, loc) && loc.level == BodyLevel::Ears)
+    turns.push_back(make_thorax_turn(ctx.rig, 0.0f, 0.0f, -towards_far * kFarEarHeadTurnRad));
+  return turns;
 }
 
 // How far a one-handed sign's key pose (plans[0]'s hand at `st`, the other arm at rest) is
@@ -817,8 +835,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   constexpr float kPlaceMissM = 0.01f, kPlaceReachM = 0.002f, kPlaceClearM = 0.02f;
   constexpr float kPlaceForwardM = 0.05f;
   constexpr int kPlaceRounds = 3;
-  // A one-handed sign's hand low on the far side of the body turns the thorax towards it.
-  const float thorax_turn = far_side_thorax_turn_rad(ctx, plans);
+  // A one-handed sign's hand on the far side: the body turns it may take (far_side_turns).
+  const std::vector<ThoraxTurn> body_turns = far_side_turns(ctx, plans);
   // Solve order: a hand that is the place of the other goes first.
   std::array<int, 2> order = {0, 1};
   if (plans[0].on_other_hand) order = {1, 0};
@@ -837,18 +855,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i] = solver.key_state(plans[i], plans[i].spec, &ok, nullptr);
   }
   if (errors->size() > before) return false;
-  // The turn is taken where it takes the key pose less deep into the body (or a touch nearer its
-  // place), which is most of those places (docs/SYNTHESIS.md, Known issues, the figures): the
-  // key state is solved again in the turned body's frame and the two compared.
-  // Turned alone, and below the waist also leaning forward (kFarSideLeanRad); the shallowest
-  // wins, the unturned pose unless a turn gains half a millimetre.
-  if (thorax_turn != 0.0f) {
+  // A turn is taken where it takes the key pose less deep into the body (or a touch nearer its
+  // place): the key state is solved again in each turned body's frame; the shallowest wins, the
+  // unturned pose unless a turn gains half a millimetre (docs/SYNTHESIS.md, the figures).
+  if (!body_turns.empty()) {
     float best = key_pose_depth(solver, plans, key[0]) - 0.0005f;
     ThoraxTurn chosen;
-    const bool below_waist = plans[0].spec.location.level == BodyLevel::BelowWaist;
-    for (float lean : {0.0f, kFarSideLeanRad}) {
-      if (lean != 0.0f && !below_waist) continue;
-      const ThoraxTurn turn = make_thorax_turn(rig, thorax_turn, lean);
+    for (const ThoraxTurn& turn : body_turns) {
       solver.set_thorax_turn(turn);
       bool ok = true;
       const HandState turned = solver.key_state(plans[0], plans[0].spec, &ok, nullptr);

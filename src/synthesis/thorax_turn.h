@@ -24,11 +24,12 @@ namespace sw::synthesis {
 struct ThoraxTurn {
   float angle_rad = 0.0f;          // about rig.up; + turns the chest towards the signer's left
   float lean_rad = 0.0f;           // forward bend about rig.left, after the twist; + leans forward
+  float head_rad = 0.0f;           // the head's own turn about rig.up at the neck (+: to the left)
   int top = -1;                    // the upper chest (or the highest trunk joint present)
   std::vector<int> chain;          // spine, chest, upper chest (those present), hips side first
   glm::quat rotation{1, 0, 0, 0};  // the top joint's model-space delta
   glm::vec3 pivot_bind{0.0f}, pivot_posed{0.0f};  // the top joint, bind and turned
-  bool active() const { return (angle_rad != 0.0f || lean_rad != 0.0f) && top >= 0; }
+  bool active() const { return (angle_rad != 0.0f || lean_rad != 0.0f || head_rad != 0.0f) && top >= 0; }
   // A turned-body point / direction (model space) as seen in the thorax frame.
   glm::vec3 to_thorax_point(const glm::vec3& p) const {
     return glm::conjugate(rotation) * (p - pivot_posed) + pivot_bind;
@@ -39,7 +40,7 @@ struct ThoraxTurn {
 // The share of the turn the neck gives back, so the face stays towards the addressee.
 constexpr float kHeadTurnBack = 0.75f;
 
-ThoraxTurn make_thorax_turn(const Rig& rig, float angle_rad, float lean_rad = 0.0f);
+ThoraxTurn make_thorax_turn(const Rig& rig, float angle_rad, float lean_rad = 0.0f, float head_rad = 0.0f);
 
 // The share `s` (0..1) of the turn's rotation: the same axis, s times the angle.
 glm::quat thorax_turn_share(const ThoraxTurn& turn, float s);
