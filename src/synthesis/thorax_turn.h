@@ -1,6 +1,7 @@
 // Thorax turn: the upper body turning about the body's vertical axis towards the far side, and
 // leaning forward, as a signer's does to reach a place low on the other side of the body (the
-// right hand beside the left hip). The arm IK, the collision model and the sign's frames all work with the trunk in
+// right hand beside the left hip); and the head's own turn at the neck, which presents the far
+// ear to the hand that reaches it. The arm IK, the collision model and the sign's frames all work with the trunk in
 // its bind pose; the turn is therefore applied as a change of frame. The spine, chest and upper
 // chest share the turn (each a third, cumulative), and everything rigid with the upper chest —
 // the shoulders, both arms, the torso capsules (collision.cpp attaches them to the top trunk
