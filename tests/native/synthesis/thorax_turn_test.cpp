@@ -106,41 +106,48 @@ TEST(ThoraxTurn, AFistTouchingBesideTheFarSideOfTheWaistTurnsTheBodyAndStillTouc
 
 // At the far ear the head turns towards the reaching hand (0.4 rad) and the thorax stays: the
 // reference humanoid's fist touching the far ear had its forearm 13.7 mm in the head; with the
-// head turned it is within 5 mm and the fist still on the ear's anchor on the turned head.
+// head turned it is within 5 mm and the fist still on the ear's anchor on the turned head. A
+// left-handed signer's head turns the other way.
 TEST(ThoraxTurn, TheHeadTurnsTowardsAHandAtTheFarEar) {
   avatar::Avatar av = make_reference_humanoid();
-  SynthContext ctx;
-  std::string error;
-  ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
-  const Rig& rig = ctx.rig;
-  notation::SignSpec s = sign_at(fist(), BodyLevel::Ears, Side::Left, Contact::Touch);
-  s.dominant.orientation.extended_finger = {0, 1, 0};
-  s.dominant.orientation.palm = {0, 0, -1};
-  SynthesisResult r = synthesize_sign(s, av, SynthesisOptions{});
-  ASSERT_TRUE(r.ok()) << r.errors[0].message;
-  const int top = rig.upper_chest >= 0 ? rig.upper_chest : rig.chest;
-  PoseBuilder pb(rig);
-  int sign_frames = 0;
-  for (const auto& sg : r.clip.segments) {
-    if (sg.kind != ClipSegment::Kind::Sign) continue;
-    const int f0 = static_cast<int>(std::lround(sg.start_s * r.clip.fps));
-    const int f1 = std::min(r.clip.frame_count - 1, static_cast<int>(std::lround(sg.end_s * r.clip.fps)));
-    for (int f = f0; f <= f1; ++f, ++sign_frames) {
-      pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * rig.joint_count]);
-      EXPECT_NEAR(turn_about_up(rig, pb, top), 0.0f, 1e-4f) << "frame " << f;
-      // Towards the right hand: a negative turn about up.
-      EXPECT_NEAR(turn_about_up(rig, pb, rig.head), -0.4f, 2e-3f) << "frame " << f;
-      PartPoint ear;
-      ASSERT_TRUE(anchor_point(av, pb, body_anchor_name(s.dominant.location, false), &ear));
-      EXPECT_LT(glm::length(hand_part(pb, kRight, notation::HandPlace::Palm, 1).point - ear.point), 0.01f)
-          << "frame " << f;
-      for (Side_ side : {kLeft, kRight}) {
-        const bool contact = r.report.intended_contact[f] & exempt_bit(side, false);
-        EXPECT_LE(arm_penetration(ctx.body, pb, side, true, contact, false).depth_m, 0.005f) << "frame " << f;
+  for (bool left_handed : {false, true}) {
+    SynthesisOptions opt;
+    opt.left_handed = left_handed;
+    SynthContext ctx;
+    std::string error;
+    ASSERT_TRUE(make_context(av, opt, &ctx, &error)) << error;
+    const Rig& rig = ctx.rig;
+    notation::SignSpec s = sign_at(fist(), BodyLevel::Ears, Side::Left, Contact::Touch);
+    s.dominant.orientation.extended_finger = {0, 1, 0};
+    s.dominant.orientation.palm = {0, 0, -1};
+    SynthesisResult r = synthesize_sign(s, av, opt);
+    ASSERT_TRUE(r.ok()) << r.errors[0].message;
+    const int top = rig.upper_chest >= 0 ? rig.upper_chest : rig.chest;
+    // Towards the reaching hand: the right hand's side is a negative turn about up.
+    const float towards_hand = left_handed ? 1.0f : -1.0f;
+    const Side_ hand = left_handed ? kLeft : kRight;
+    PoseBuilder pb(rig);
+    int sign_frames = 0;
+    for (const auto& sg : r.clip.segments) {
+      if (sg.kind != ClipSegment::Kind::Sign) continue;
+      const int f0 = static_cast<int>(std::lround(sg.start_s * r.clip.fps));
+      const int f1 = std::min(r.clip.frame_count - 1, static_cast<int>(std::lround(sg.end_s * r.clip.fps)));
+      for (int f = f0; f <= f1; ++f, ++sign_frames) {
+        pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * rig.joint_count]);
+        EXPECT_NEAR(turn_about_up(rig, pb, top), 0.0f, 1e-4f) << "frame " << f;
+        EXPECT_NEAR(towards_hand * turn_about_up(rig, pb, rig.head), 0.4f, 2e-3f) << "frame " << f;
+        PartPoint ear;
+        ASSERT_TRUE(anchor_point(av, pb, body_anchor_name(s.dominant.location, left_handed), &ear));
+        EXPECT_LT(glm::length(hand_part(pb, hand, notation::HandPlace::Palm, 1).point - ear.point), 0.01f)
+            << "frame " << f;
+        for (Side_ side : {kLeft, kRight}) {
+          const bool contact = r.report.intended_contact[f] & exempt_bit(side, false);
+          EXPECT_LE(arm_penetration(ctx.body, pb, side, true, contact, false).depth_m, 0.005f) << "frame " << f;
+        }
       }
     }
+    EXPECT_GT(sign_frames, 0) << "left-handed " << left_handed;
   }
-  EXPECT_GT(sign_frames, 0);
 }
 
 TEST(ThoraxTurn, SignsElsewhereDoNotTurn) {
