@@ -1,19 +1,22 @@
 // Thorax turn: the upper body turning about the body's vertical axis towards the far side, and
 // leaning forward, as a signer's does to reach a place low on the other side of the body (the
 // right hand beside the left hip); and the head's own turn at the neck, which presents the far
-// ear to the hand that reaches it. The arm IK, the collision model and the sign's frames all work with the trunk in
-// its bind pose; the turn is therefore applied as a change of frame. The spine, chest and upper
-// chest share the turn (each a third, cumulative), and everything rigid with the upper chest —
-// the shoulders, both arms, the torso capsules (collision.cpp attaches them to the top trunk
-// joint) — turns with it rigidly. A sign is solved in that frame ("thorax frame"), where the
-// trunk is in its bind pose: only the body anchors on the joints below the upper chest (the
-// stomach on the chest, the belly and waist on the spine, below the waist on the hips) are
-// mapped into it, turned by what their joint turns and then seen from the turned upper chest.
-// So a place low on the far side comes forward relative to the shoulder (below the waist by
-// the anchor's sideways distance times sin(turn)) while every touch still lands on its anchor
-// on the turned body. The clip's local rotations then carry the turn in the spine chain, and
-// the neck turns the head three quarters of the way back towards the addressee (and up again
-// from a lean).
+// ear to the hand that reaches it (sign_motion.cpp far_side_turns decides which a sign takes).
+// The arm IK, the collision model and the sign's frames all work with the trunk in its bind
+// pose; the turn is therefore applied as a change of frame. The spine, chest and upper chest
+// share the turn (each a third, cumulative), and everything rigid with the upper chest — the
+// shoulders, both arms, the torso capsules (collision.cpp attaches them to the top trunk joint)
+// — turns with it rigidly. A sign is solved in that frame ("thorax frame"), where the trunk is
+// in its bind pose: only the body anchors on the joints below the upper chest (the stomach on
+// the chest, the belly and waist on the spine, below the waist on the hips) and on the head
+// are mapped into it, posed on the turned body and then seen from the turned upper chest. So a
+// place low on the far side comes forward relative to the shoulder (below the waist by the
+// anchor's sideways distance times sin(turn)) while every touch still lands on its anchor on the
+// turned body. The clip's local rotations then carry the turn in the spine chain, and the neck
+// turns the head three quarters of the way back towards the addressee (and up again from a
+// lean), plus the head's own turn. The head and neck capsules are not turned in the sign's own
+// frames (the capsule stands nearly on the neck's vertical axis); the clip's check sees them
+// turned.
 #pragma once
 
 #include <vector>
