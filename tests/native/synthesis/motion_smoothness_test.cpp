@@ -232,6 +232,37 @@ TEST_P(MotionSmoothness, RestTransitionsMoveAtHumanSpeed) {
   RecordProperty("worst_change_mm", std::to_string(worst.change_m * 1000.0f) + " " + worst.change_what);
 }
 
+// A one-handed sign low on the far side of the body turns the thorax towards it (thorax_turn.h):
+// the whole clip, from the rest pose and back, with the turn eased in and out by the transitions,
+// keeps the wrists and elbows within the human bounds (5 hands x the stomach to below the waist x
+// touch, close, none: 60 clips a rig, most of them turned).
+TEST_P(MotionSmoothness, FarSideReachesWithTheTurnedThoraxMoveContinuously) {
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  const notation::HandShape shapes[] = {testing::flat(), testing::fist(), testing::index_point(), testing::fist(),
+                                        testing::index_point()};
+  const notation::Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+  Worst worst;
+  for (int shape = 0; shape < 5; ++shape)
+    for (notation::BodyLevel level : {notation::BodyLevel::Stomach, notation::BodyLevel::Belly,
+                                      notation::BodyLevel::Waist, notation::BodyLevel::BelowWaist})
+      for (notation::Contact c : {notation::Contact::Touch, notation::Contact::Close, notation::Contact::None}) {
+        notation::SignSpec s = testing::sign_at(shapes[shape], level, notation::Side::LeftBeside, c);
+        s.dominant.orientation.extended_finger = fingers[shape];
+        s.dominant.orientation.palm = {0, 0, -1};
+        SynthesisResult r = synth.sign(s, SynthesisOptions{});
+        ASSERT_TRUE(r.ok()) << r.errors[0].message;
+        const Worst w = measure(rig_, r.clip);
+        const std::string where = "shape " + std::to_string(shape) + " level " + std::to_string(static_cast<int>(level)) +
+                                  " contact " + std::to_string(static_cast<int>(c));
+        expect_smooth(where, w, Bound{});
+        if (w.step_m > worst.step_m) worst.step_m = w.step_m, worst.step_what = where + ": " + w.step_what;
+        if (w.change_m > worst.change_m) worst.change_m = w.change_m, worst.change_what = where + ": " + w.change_what;
+      }
+  RecordProperty("worst_step_mm", std::to_string(worst.step_m * 1000.0f) + " " + worst.step_what);
+  RecordProperty("worst_change_mm", std::to_string(worst.change_m * 1000.0f) + " " + worst.change_what);
+}
+
 TEST_P(MotionSmoothness, AlphabetsAndLetterPairsMoveContinuously) {
   Synthesizer synth(avatar_);
   ASSERT_TRUE(synth.ok()) << synth.error();
