@@ -41,7 +41,9 @@ glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const Mir
                           float s, const glm::vec3& reference, const glm::vec3& outward = glm::vec3(0.0f));
 
 // Wrist motions (nod, swing, twist, circle): rotation in the hand's bind frame, right-multiplied
-// onto the hand delta. Identity for other kinds.
+// onto the hand delta. Identity for other kinds. `s` in [0, 1]: two cycles. sign_motion gives
+// nods, swings and circles the step's time (a constant rate; their amplitude is eased in and out
+// over the first and last quarter), twists the minimum-jerk path parameter.
 glm::quat wrist_motion(const Rig& rig, Side side, const notation::Movement& m, float s);
 
 // Finger play: the fingers flex in a wave, index to little.

@@ -15,6 +15,7 @@
 #include "synthesis/hand_parts.h"
 #include "synthesis/movement.h"
 #include "synthesis/orientation.h"
+#include "synthesis/thorax_turn.h"
 
 namespace sw::synthesis {
 
@@ -100,6 +101,19 @@ struct HandState {
   float swivel = 0.4f;
 };
 
+// A movement's hand turn, seed 004's orientation change within a gesture (eq. (7)'s S_beg ->
+// S_end): a turn larger than kAmbiguousTurnRad (150 degrees) may go either way round
+// (choose_turn_direction), and no step turns the hand faster on average than
+// kMeanHandTurnRadPerS, so its minimum-jerk peak stays at 1.875 times that. 5 rad/s peaks at
+// 9.4 rad/s, under the 15 rad/s at which the per-frame solve takes a wrist change for a flip
+// (kWristFlipRadPerS) and within the 10-15 rad/s of a fast forearm rotation. The written
+// replace (0.35 s) turned 180 degrees at 9 rad/s on average, 17 at the peak. Measured on
+// STUDENT with the way round chosen: 6 rad/s, wrist or elbow steps up to 42 mm (avatar) / 48 mm
+// (reference); 5 rad/s, 40 / 41 mm (with the rounding's way round, 6 rad/s left the avatar's
+// elbow jumping 128 mm).
+constexpr float kAmbiguousTurnRad = 2.618f;
+constexpr float kMeanHandTurnRadPerS = 5.0f;
+
 HandState mix_state(const HandState& a, const HandState& b, float s) {
   HandState o;
   o.target = a.target + s * (b.target - a.target);
@@ -108,6 +122,19 @@ HandState mix_state(const HandState& a, const HandState& b, float s) {
   o.offset = a.offset + s * (b.offset - a.offset);
   o.swivel = a.swivel + s * (b.swivel - a.swivel);
   return o;
+}
+
+// The hand's turn from a to b, the other way round the same axis than slerp_shortest takes (the
+// angle 2*pi minus the short one). For a turn of about 180 degrees (a hand written fingers in,
+// palm down, turning to fingers out, palm to the side: STUDENT) the two ways are about as long,
+// and which one slerp_shortest takes is decided by the rounding of a dot product near 0, not by
+// what the arm can follow (choose_turn_direction).
+glm::quat slerp_other_way(const glm::quat& a, const glm::quat& b, float t) {
+  glm::quat bq = glm::dot(a, b) < 0.0f ? b : -b;  // the hemisphere slerp_shortest does not take
+  const float d = std::max(-1.0f, std::min(1.0f, glm::dot(a, bq)));
+  const float theta = std::acos(d), sin_theta = std::sin(theta);
+  if (sin_theta < 1e-6f) return slerp_shortest(a, b, t);
+  return glm::normalize(a * (std::sin((1.0f - t) * theta) / sin_theta) + bq * (std::sin(t * theta) / sin_theta));
 }
 
 struct HandPlan {
@@ -148,10 +175,30 @@ struct Solver {
   PoseBuilder bind_pose;
   std::array<ArmPose, 2> rest_arm;
   HandAngles rest_angles;
+  // The sign's thorax turn (none unless set_thorax_turn) and the turned body its anchors are on.
+  ThoraxTurn turn;
+  PoseBuilder turned_pose;
 
   Solver(const SynthContext& c, std::vector<SynthesisError>* e, std::string w)
-      : ctx(c), rig(c.rig), errors(e), where(std::move(w)), bind_pose(c.rig) {
+      : ctx(c), rig(c.rig), errors(e), where(std::move(w)), bind_pose(c.rig), turned_pose(c.rig) {
     bind_pose.finalize();
+  }
+
+  void set_thorax_turn(const ThoraxTurn& t) {
+    turn = t;
+    turned_pose = PoseBuilder(rig);
+    pose_thorax_turn(rig, turn, &turned_pose);
+    turned_pose.finalize();
+  }
+
+  // A body anchor as the sign is solved: on the bind pose, or with a thorax turn on the turned
+  // body, seen in the thorax frame (thorax_turn.h).
+  bool body_anchor(const std::string& name, PartPoint* p) const {
+    if (!turn.active()) return anchor_point(*ctx.avatar, bind_pose, name, p);
+    if (!anchor_point(*ctx.avatar, turned_pose, name, p)) return false;
+    p->point = turn.to_thorax_point(p->point);
+    p->normal = turn.to_thorax_dir(p->normal);
+    return true;
   }
 
   glm::vec3 part_offset(Side side, const HandAngles& angles, HandPlace place, int finger) const {
@@ -181,7 +228,7 @@ struct Solver {
   bool body_target(const HandPlan& plan, const Location& loc, glm::vec3* target, PartPoint* anchor) {
     std::string name = body_anchor_name(loc, plan.mirror_x);
     PartPoint p;
-    if (!anchor_point(*ctx.avatar, bind_pose, name, &p)) {
+    if (!body_anchor(name, &p)) {
       errors->push_back({where + (plan.side == kRight ? " right" : " left") + " hand location",
                          "the avatar has no body anchor '" + name + "'"});
       return false;
@@ -356,10 +403,18 @@ struct Solver {
                spec.location.level == BodyLevel::ShoulderTop) {
         const glm::vec3 written = st.target;
         const ArmRig& arm = rig.arms[plan.side];
-        // Scored on the whole rest pose with the arm solved into it (the finger joints an arm
-        // solve leaves keep their rest rotations): posed as the sign's frames pose it instead,
-        // every candidate's arm measured 38-54 mm and the fist held off the far shoulder top
-        // went from 13 to 38 mm. Not yet understood; the figure is held by HandsAcrossTheBody.
+        // Scored on the whole rest pose with the arm solved into it, where the joints an arm
+        // solve leaves (the finger metacarpals) keep the hanging hand's rotations, so the hand's
+        // depth scored here is not the sign's (the project avatar's fist held off, fingers
+        // across: 52-83 mm, the fingers hanging below the wrist; posed as the frames pose it,
+        // 0-25 mm). Why no better score is used: the key pose does not decide the clip. As
+        // solved, every candidate's forearm is 49-61 mm in the far torso half; turned out of the
+        // body (turn_hand_out_of_body, below) the pointing hand's still 17-120 mm; the clip's
+        // figure (13.0 mm) is what the per-frame corrections (pushes, swivel fixes, turns) make
+        // of the pick. Scored after the turn and posed as the frames pose it, the fist went
+        // 13.0 -> 17.0 mm and the pointing hand 10.7 -> 29.5 mm; posed right without the turn,
+        // 13 -> 38 mm. The pick is kept (held by HandsAcrossTheBody) until a score of the
+        // corrected frames replaces it.
         PoseBuilder posed(rig);
         auto cost = [&](const ArmPose& p, glm::vec3 target) {
           posed.set_from_local(ctx.rest_locals.data());
@@ -711,6 +766,86 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   return plans;
 }
 
+// The body's turns a one-handed sign may take for a hand on or beside the FAR side of the body
+// (far_side_turns; each is taken only where its key pose measures shallower, below).
+//
+// From the stomach down (the right hand at the left hip) the arm reaches across the belly and,
+// with the trunk unturned, lay in it however the place was held off and the elbow swung (a fist
+// touching beside the far side below the waist: upper arm 61-79 mm in the torso). A signer
+// turns the upper body towards that side, which brings the place forward of the reaching
+// shoulder. kFarSideThoraxTurnRad: 20 degrees, about half the thoracolumbar axial rotation a
+// standing adult has each way (about 35-45 degrees, most of it thoracic), so a reach, not a
+// twist to the limit.
+constexpr float kFarSideThoraxTurnRad = 0.35f;
+// With the turn, the trunk may also lean forward 0.2 rad (11 degrees; trunk flexion goes to
+// 60-90), which lowers the shoulder towards a place below the waist (measured: the reference
+// humanoid's fists touching beside the far side below the waist 37.8 / 36.5 -> 7.6 / 3.3 mm;
+// 0.1 rad 21.5 / 14.8, 0.3 and 0.4 no better on the project avatar). Only below the waist: at
+// the waist and belly the place is within the arm's reach and leaning put the clips deeper
+// (the reference humanoid's fist touching beside the waist 14.1 -> 17.2 mm, the belly 4.6 ->
+// 8.3), though their key poses as scored measured shallower. A side bend towards the far side
+// instead raised the reaching shoulder (0.1 rad: 37.8 -> 40.3 mm below the waist).
+constexpr float kFarSideLeanRad = 0.2f;
+// At the far ear (the right hand at the left ear) the forearm crossed the face into the head
+// (the project avatar 14-41 mm, the reference humanoid's fist touching 13.7 mm): the head turns
+// towards the reaching hand and presents the ear, 0.4 rad (23 degrees; the neck turns 70-80 each
+// way). Measured over the ears' 15 cases a rig (5 hands x touch, close, none): 0.2 rad left the
+// avatar at 38 mm, 0.4 rad at 17.5, 0.6 rad at 10.7 with a third of the turn more; the thorax
+// turn does not help there (the head's anchors turn with the chest, less the neck's give-back).
+// The eyes keep their gaze (the face layer counter-rotates them).
+constexpr float kFarEarHeadTurnRad = 0.4f;
+
+std::vector<ThoraxTurn> far_side_turns(const SynthContext& ctx, const std::array<HandPlan, 2>& plans) {
+  std::vector<ThoraxTurn> turns;
+  if (!ctx.options.avoid_collisions) return turns;
+  const HandPlan& d = plans[0];
+  if (!d.active || plans[1].active || d.on_other_hand) return turns;
+  const Location& loc = d.spec.location;
+  if (loc.kind != Location::Kind::Body) return turns;
+  // Towards the far side: the right hand's shoulder forward is a positive turn about up; the
+  // head towards the right hand a negative one.
+  const float towards_far = d.side == kRight ? 1.0f : -1.0f;
+  const bool far = Solver::far_side_beside(d, loc) || Solver::far_side_place(d, loc);
+  if (far && static_cast<int>(loc.level) >= static_cast<int>(BodyLevel::Stomach) &&
+      static_cast<int>(loc.level) <= static_cast<int>(BodyLevel::BelowWaist)) {
+    turns.push_back(make_thorax_turn(ctx.rig, towards_far * kFarSideThoraxTurnRad));
+    if (loc.level == BodyLevel::BelowWaist)
+      turns.push_back(make_thorax_turn(ctx.rig, towards_far * kFarSideThoraxTurnRad, kFarSideLeanRad));
+  }
+  if (Solver::far_side_place(d, loc) && loc.level == BodyLevel::Ears)
+    turns.push_back(make_thorax_turn(ctx.rig, 0.0f, 0.0f, -towards_far * kFarEarHeadTurnRad));
+  return turns;
+}
+
+// How far a one-handed sign's key pose (plans[0]'s hand at `st`, the other arm at rest) is
+// in the body, as the sign's frames pose it: the arm and the hand in the trunk (the hand not when
+// it touches on purpose), plus, for a touch, how far it stops short of its place beyond 5 mm.
+float key_pose_depth(Solver& solver, const std::array<HandPlan, 2>& plans, const HandState& st) {
+  const SynthContext& ctx = solver.ctx;
+  const Rig& rig = ctx.rig;
+  const HandPlan& plan = plans[0];
+  const bool touch = is_touch(plan.spec.location.contact);
+  ArmTarget t;
+  t.point = st.target;
+  t.contact_offset = st.offset;
+  t.hand_delta = st.delta;
+  t.auto_swivel = false;
+  t.swivel_rad = st.swivel;
+  t.body = &ctx.body;
+  t.hand_contact = touch;
+  const ArmPose ap = solve_arm(rig, plan.side, t);
+  PoseBuilder rest(rig);
+  rest.set_from_local(ctx.rest_locals.data());
+  PoseBuilder pb(rig);
+  pose_arm_at_rest(rig, rest, plans[1].side, glm::quat(1, 0, 0, 0), &pb);
+  apply_arm(rig, plan.side, ap, &pb);
+  pose_fingers(rig, plan.side, st.angles, ap.hand, &pb);
+  pb.finalize();
+  float depth = arm_penetration(ctx.body, pb, plan.side, true, touch, false).depth_m;
+  if (!touch) depth = std::max(depth, hand_penetration(ctx.body, pb, plan.side, true, false).depth_m);
+  return depth + (touch ? std::max(0.0f, ap.reach_error_m - 0.005f) : 0.0f);
+}
+
 }  // namespace
 
 std::string body_anchor_name(const Location& loc, bool mirror_x) {
@@ -809,6 +944,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   constexpr float kPlaceMissM = 0.01f, kPlaceReachM = 0.002f, kPlaceClearM = 0.02f;
   constexpr float kPlaceForwardM = 0.05f;
   constexpr int kPlaceRounds = 3;
+  // A one-handed sign's hand on the far side: the body turns it may take (far_side_turns).
+  const std::vector<ThoraxTurn> body_turns = far_side_turns(ctx, plans);
   // Solve order: a hand that is the place of the other goes first.
   std::array<int, 2> order = {0, 1};
   if (plans[0].on_other_hand) order = {1, 0};
@@ -827,6 +964,25 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     key[i] = solver.key_state(plans[i], plans[i].spec, &ok, nullptr);
   }
   if (errors->size() > before) return false;
+  // A turn is taken where it takes the key pose less deep into the body (or a touch nearer its
+  // place): the key state is solved again in each turned body's frame; the shallowest wins, the
+  // unturned pose unless a turn gains half a millimetre (docs/SYNTHESIS.md, the figures).
+  if (!body_turns.empty()) {
+    float best = key_pose_depth(solver, plans, key[0]) - 0.0005f;
+    ThoraxTurn chosen;
+    for (const ThoraxTurn& turn : body_turns) {
+      solver.set_thorax_turn(turn);
+      bool ok = true;
+      const HandState turned = solver.key_state(plans[0], plans[0].spec, &ok, nullptr);
+      const float depth = ok ? key_pose_depth(solver, plans, turned) : best;
+      if (depth < best) {
+        best = depth;
+        key[0] = turned;
+        chosen = turn;
+      }
+    }
+    solver.set_thorax_turn(chosen);
+  }
   // A hand placed on the other hand had the default swivel (key_state cannot know where that
   // place is): MORNING's left hand in the crook of the right elbow was held with its elbow down
   // into the body and the per-frame clearing flipped it between two swivels (45 cm in a frame).
@@ -962,12 +1118,49 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       PartPoint place;
       if (plans[i].active && loc.kind == Location::Kind::Body && loc.level != BodyLevel::NeutralSpace &&
           is_touch(loc.contact) &&
-          anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(loc, plans[i].mirror_x), &place) &&
+          solver.body_anchor(body_anchor_name(loc, plans[i].mirror_x), &place) &&
           glm::length(place.normal) > 1e-6f)
         touch_outward[i] = glm::normalize(place.normal);
     }
+    // Which way round a hand turns from `from` to `goal` (true: the other way than
+    // slerp_shortest). A turn of more than kAmbiguousTurnRad can go either way at nearly the same
+    // length; the way the arm follows is the one the IK reaches best at a quarter, half and three
+    // quarters of the way (3 * orientation error + 20 * reach error + the body cost, the swivel
+    // choice's units, arm_ik.h). STUDENT's two 180-degree turns (the pinched hand from the left
+    // palm, fingers down, to the forehead, fingers in; then to fingers out, palm left) went the
+    // way the rounding chose: on the project avatar through orientations 90+ degrees out of the
+    // wrist's reach, so the wrist held and then swung round the fingertip (98 mm in a frame).
+    auto choose_turn_direction = [&](int i, const std::array<HandState, 2>& from,
+                                     const std::array<HandState, 2>& goal) {
+      const float short_turn = rotation_angle(glm::conjugate(from[i].delta) * goal[i].delta);
+      if (short_turn < kAmbiguousTurnRad) return false;
+      const HandPlan& op = plans[1 - i];
+      glm::vec3 place(0.0f);
+      if (plans[i].on_other_hand && op.active)
+        place = other_hand_point(solver, plans[i], op, key[1 - i], plans[i].place, plans[i].place_finger,
+                                 plans[i].place_distance_m);
+      float cost[2] = {0.0f, 0.0f};
+      for (int way = 0; way < 2; ++way)
+        for (float s : {0.25f, 0.5f, 0.75f}) {
+          const HandState h = mix_state(from[i], goal[i], s);
+          ArmTarget t;
+          t.point = h.target + place;
+          t.contact_offset = h.offset;
+          t.hand_delta = way ? slerp_other_way(from[i].delta, goal[i].delta, s) : h.delta;
+          t.auto_swivel = false;
+          t.swivel_rad = h.swivel;
+          t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
+          t.hand_contact = plans[i].exempt_trunk;
+          const ArmPose ap = solve_arm(rig, plans[i].side, t);
+          cost[way] += 3.0f * ap.orientation_error_rad + 20.0f * ap.reach_error_m + ap.body_cost;
+        }
+      // The other way only when it is clearly better: near a tie the choice would follow the
+      // rounding of the solves (native and WebAssembly must make the same clip).
+      return cost[1] < cost[0] - 0.01f;
+    };
     for (const Segment& seg : segments) {
       std::array<HandState, 2> from = state, goal = state;
+      std::array<bool, 2> other_way = {false, false};  // the hand turns the other way round
       std::array<std::vector<Movement>, 2> ms;
       float duration = 0.3f, hold = 0.0f;
       if (seg.back_to_start) {
@@ -1079,6 +1272,17 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         seg_start[seg.step] = from;
         seg_goal[seg.step] = goal;
       }
+      // Every segment (a step, its retrace, the return of a repetition from the start): the
+      // hand's turn goes the way the arm reaches, and lasts at least its turn at
+      // kMeanHandTurnRadPerS (the minimum-jerk peak is 1.875 times that). A retrace samples the
+      // same states as its step, so it takes the same way back.
+      for (int i = 0; i < 2; ++i) {
+        if (!plans[i].active) continue;
+        other_way[i] = choose_turn_direction(i, from, goal);
+        float turn = rotation_angle(glm::conjugate(from[i].delta) * goal[i].delta);
+        if (other_way[i]) turn = 6.28318531f - turn;
+        duration = std::max(duration, turn / kMeanHandTurnRadPerS);
+      }
       int n = std::max(2, static_cast<int>(std::lround(duration * fps / speed)));
       std::array<HandState, 2> last = from;
       for (int f = 1; f <= n; ++f) {
@@ -1088,6 +1292,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         for (int i = 0; i < 2; ++i) {
           HandState h = mix_state(from[i], goal[i], s);
           const glm::vec3 state_target = h.target;  // before the path's offsets
+          if (other_way[i]) h.delta = slerp_other_way(from[i].delta, goal[i].delta, s);
           glm::vec3 reference = h.delta * rig.arms[plans[i].side].palm_normal;
           bool alt = i == 1 && plans[1].alternating;
           const glm::vec3 outward = relocated[i] ? glm::vec3(0.0f) : touch_outward[i];
@@ -1106,7 +1311,18 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             // wrist stays where it is. Turning it about the contact part instead (the target is
             // where that part goes) swung the wrist around the palm (Й's twist: the wrist's
             // per-frame step changed by 73 mm from one frame to the next).
-            const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, ps);
+            //
+            // Nods, swings and circles cycle at a constant rate (wrist_motion's phase is the
+            // step's time): on the minimum-jerk path parameter the middle cycle ran 1.9 times
+            // faster than the others and WALK's flapping fingertips changed their step by 72 mm.
+            // A twist keeps the path parameter: it drives the forearm's rotation into its limit
+            // (Й: E(u), P(o)), where the clamped wrist angles change branch; at a constant rate
+            // the change stays under the flip threshold (kWristFlipRadPerS) and passes
+            // unfiltered (Й's ring tip 46 -> 81 mm change of step), while the warped middle is
+            // caught as a flip and turned through at kWristTurnRadPerS.
+            const float time_s = static_cast<float>(f) / n;
+            const float phase = m.kind == MovementKind::WristTwist ? ps : seg.reversed ? 1.0f - time_s : time_s;
+            const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, phase);
             h.target += turned * h.offset - h.delta * h.offset;
             h.delta = turned;
             if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
@@ -1384,7 +1600,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           if (plan.on_other_hand) {
             anchor = solver.other_hand_place(pb, plan);
           } else if (plan.spec.location.kind == Location::Kind::Body) {
-            if (!anchor_point(*ctx.avatar, solver.bind_pose, body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
+            if (!solver.body_anchor(body_anchor_name(plan.spec.location, plan.mirror_x), &anchor))
               continue;
           } else {
             continue;
@@ -1479,6 +1695,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         push_offsets[f][i] = glm::vec3(0.0f);
       }
   }
+  // Solved in the thorax frame: the clip's frames carry the turn in the trunk chain.
+  if (solver.turn.active())
+    for (int f = 0; f < out->frame_count; ++f)
+      apply_thorax_turn(rig, solver.turn, &out->rotations[static_cast<size_t>(f) * J]);
   return true;
 }
 

@@ -304,8 +304,10 @@ constexpr int kPathSamples = 24;
 
 // The longest distance any joint travels along an interpolation (interpolate's arguments).
 // `sample(k, out)` writes the k-1 intermediate states of the path from a to b (interpolate's form).
+// `counted` (optional, per joint): only those joints' paths enter the maximum.
 template <typename Sampler>
-float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sampler sample) {
+float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sampler sample,
+                  const std::vector<bool>* counted = nullptr) {
   const int J = rig.joint_count;
   std::vector<glm::quat> samples;
   sample(kPathSamples, &samples);
@@ -323,6 +325,12 @@ float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sample
       if (i > 0) length[j] += glm::length(cur - prev[j]);
       prev[j] = cur;
     }
+  }
+  if (counted) {
+    float longest = 0.0f;
+    for (int j = 0; j < J; ++j)
+      if ((*counted)[static_cast<size_t>(j)]) longest = std::max(longest, length[j]);
+    return longest;
   }
   return J > 0 ? *std::max_element(length.begin(), length.end()) : 0.0f;
 }
@@ -480,6 +488,14 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
 // raise on the project avatar takes 29 states with 2, 28 with 3, 4 or 5 (46 direct), the
 // lexicon's median no lower with more; each costs an arm solve.
 constexpr int kHandPathWaypoints = 3;
+
+// The fastest a finger or fingertip moves on a rest transition's hand path (its peak, not its
+// mean; the arm keeps eq. (10)'s minimum-jerk profile). Peak hand speeds in fluent signing are
+// about 2-3 m/s (motion-capture studies of ASL/DGS signers; MotionSmoothness holds every tracked
+// point to 3 m/s, 10 cm a frame at 30 fps): 2.5 m/s leaves a sixth of that for the frames'
+// rounding. Measured over the lexicon's rest transitions: 2.2 m/s made ME's raise 0.83 s on the
+// project avatar, 2.5 m/s 0.73 s, 2.8 m/s 0.63 s with a fingertip at 98.6 mm a frame (WOMAN).
+constexpr float kHandPathFingerPeakMPerS = 2.5f;
 
 // interpolate_chain's path through the hand-path waypoints, computed for what differs: the
 // waypoints differ from the direct slerp only in the arm joints (shoulder, upper arm, forearm,
@@ -657,8 +673,22 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   }
   const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
+  // Eq. (10)'s L_max on the hand's path is the arm's: the longest path of the shoulder girdle,
+  // upper arm, forearm and wrist joints (the hand joint is the wrist). coef's 1 m/s is a mean
+  // HAND speed (the wrist marker of the motion-capture literature), and on the way up from the
+  // rest the fingertips travel 2.2 times the wrist's path as the hand turns from hanging to its
+  // sign (ME on the project avatar: index tip 0.97 m, wrist 0.44 m): counted, that turn set k and
+  // ME's raise took 1.0 s where a signer takes 0.6-0.8 s. The fingers are held to a human speed
+  // by the peak rule below instead (kHandPathFingerPeakMPerS).
+  std::vector<bool> arm_joints(static_cast<size_t>(J), false);
+  for (const ArmRig& a : rig.arms)
+    for (int j : {a.shoulder, a.upper, a.lower, a.hand})
+      if (j >= 0) arm_joints[static_cast<size_t>(j)] = true;
+  // The fingers' (and fingertips') longest step a frame: kHandPathFingerPeakMPerS, scaled as
+  // eq. (10)'s k is (the global speed divides every duration).
+  const float finger_peak_m = kHandPathFingerPeakMPerS * speed / fps;
   TransitionPlan p;
-  p.lmax_m = path_length(rig, from, to, sample);
+  p.lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p.k = transition_states(p.lmax_m, fps, speed);
   if (!direct->states_exceed(p.k)) return false;
   // One pass over the states: the longest joint step of a frame (plan_chain's peak rule) and
@@ -668,20 +698,25 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   std::vector<PenetrationMemo::Result> deepest;
   // `abandon_step_m`: a step longer than this means the states are sampled again (more of
   // them) and this pass's depths are thrown away, so past it only the steps are measured.
-  auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m) {
+  // `step_m`: the longest step of an arm joint; `finger_step_m`: of any other joint.
+  float finger_step_m = 0.0f;
+  auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
     std::vector<glm::vec3> prev(J), cur(J);
     *step_m = 0.0f;
+    finger_step_m = 0.0f;
     *d = KindDepths{};
     deepest.assign(static_cast<size_t>(std::max(0, p.k - 1)), PenetrationMemo::Result{});
     for (int i = 0; i <= p.k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p.k ? to : &p.frames[static_cast<size_t>(i - 1) * J]);
       for (int j = 0; j < J; ++j) {
         cur[j] = pb.position(j);
-        if (i > 0) *step_m = std::max(*step_m, glm::length(cur[j] - prev[j]));
+        if (i == 0) continue;
+        float& longest = arm_joints[static_cast<size_t>(j)] ? *step_m : finger_step_m;
+        longest = std::max(longest, glm::length(cur[j] - prev[j]));
       }
       std::swap(prev, cur);
-      if (i == 0 || i == p.k || *step_m > abandon_step_m) continue;
+      if (i == 0 || i == p.k || *step_m > abandon_step_m || finger_step_m > abandon_finger_step_m) continue;
       const std::uint8_t ex = p.exempt[static_cast<size_t>(i - 1)];
       for (int side_index = 0; side_index < 2; ++side_index) {
         const Side side = static_cast<Side>(side_index);
@@ -708,13 +743,13 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   float step_m = 0.0f;
   KindDepths d;
   const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;  // plan_chain's rule
-  measure(&step_m, &d, peak_step_m);
-  if (step_m > peak_step_m) {
-    p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
+  measure(&step_m, &d, peak_step_m, finger_peak_m);
+  if (step_m > peak_step_m || finger_step_m > finger_peak_m) {
+    p.k = static_cast<int>(std::ceil(p.k * std::max(step_m / peak_step_m, finger_step_m / finger_peak_m)));
     if (!direct->states_exceed(p.k)) return false;
     sample(p.k, &p.frames);
     p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
-    measure(&step_m, &d, std::numeric_limits<float>::infinity());
+    measure(&step_m, &d, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
   }
   p.via_points = kHandPathWaypoints;
   const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);

@@ -48,7 +48,8 @@ int transition_states(float lmax_m, float fps, float speed);
 
 struct TransitionPlan {
   int k = 0;                 // states (eq. 10); k-1 intermediate frames are produced
-  float lmax_m = 0.0f;       // eq. (10)'s L_max: the longest joint path (transition_path_m)
+  float lmax_m = 0.0f;       // eq. (10)'s L_max: the longest joint path (transition_path_m);
+                             // on a rest transition's hand path, the arm joints' (transition.cpp)
   int via_points = 0;        // via-poses or waypoint poses the path was routed through
   float max_penetration_m = 0.0f;  // after routing
   std::vector<glm::quat> frames;   // (k-1) * joint_count, frame-major

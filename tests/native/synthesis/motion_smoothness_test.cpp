@@ -116,13 +116,16 @@ struct Bound {
   float step_mm = kMaxStepM * 1000.0f, change_mm = kMaxStepChangeM * 1000.0f;
 };
 
-// Fingertips within signs and letters: the speed bound of the hand (their worst step is 74 mm a
-// frame, WALK's fingers), and their step change held to its measured worst, 72 mm, rounded up.
-// That is over the hand's 56 mm: a fingertip 18 cm from the wrist sweeps an arc as the wrist
-// turns (G -> B: 65 mm a frame at the peak, 46 mm of it a change of direction) and the fingers'
-// own flexion adds to it (WALK, PLAY, HOW). Whether a signer's fingertips accelerate that hard is
-// not measured here (no motion-capture data in the sources); the bound keeps it from growing.
-const Bound kFingertipBound{kMaxStepM * 1000.0f, 75.0f};
+// Fingertips within signs and letters: the speed bound of the hand (their worst step is 80 mm a
+// frame, the ring tip on the way from ASL J to W), and their step change held to its measured
+// worst, 67 mm, rounded up. That is over the hand's 56 mm: a fingertip 18 cm from the wrist
+// sweeps an arc as the wrist turns, and a wrist twist drives the forearm's rotation into its
+// limit, where the clamped wrist angles change branch (PLAY 67 mm, NUMBER 65 mm; Ukrainian Ґ's
+// pairs 64 mm). WALK's 72 mm came off with nods timed at a constant rate (wrist_motion): the
+// minimum-jerk warp ran the middle cycle 1.9 times faster. Whether a signer's fingertips
+// accelerate that hard is not measured here (no motion-capture data in the sources); the bound
+// keeps it from growing.
+const Bound kFingertipBound{kMaxStepM * 1000.0f, 70.0f};
 
 class MotionSmoothness : public ::testing::TestWithParam<const char*> {
  protected:
@@ -152,8 +155,11 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
   ASSERT_TRUE(synth.ok()) << synth.error();
   // Known gaps, measured (the worse of the two rigs, rounded up by a few mm) and held to their
   // own bounds so they cannot grow unnoticed; every other sign meets the human bounds above.
-  // STUDENT (98 mm step on the avatar, 66 mm change on the reference: the 180-degree turn from
-  // the fingertips on the forehead to the flat hand pointing forward in one 0.35 s replace).
+  // None now. STUDENT was the last (98 mm step on the avatar, 66 mm change on the reference):
+  // its two 180-degree hand turns went the way the rounding of a dot product chose, through
+  // orientations out of the wrist's reach, the second in a 0.35 s replace; the turn's way is now
+  // chosen by what the arm reaches and no step turns the hand faster than 5 rad/s on average
+  // (sign_motion.cpp, kMeanHandTurnRadPerS): 40/32 mm (avatar), 41/30 mm (reference).
   // What fixed the others (BAD, DAY, DEAF, HOSPITAL, LEARN, MORNING came off this list with
   // swivel continuity and the forearm-carried elbow contact; BOOK, 86 mm change on the avatar,
   // with hands parted at a movement's goal; TELL and THANK-YOU, 78 mm elbow steps and 71/94 mm
@@ -161,7 +167,7 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
   // fix on a path for a gain under 1 mm, and turns ramped without a kink; LOOK, 61 mm on the
   // avatar, with pushes ramped in a blended direction): CHANGELOG.md; docs/SYNTHESIS.md, known
   // issues.
-  const std::map<std::string, Bound> known = {{"STUDENT", {100, 70}}};
+  const std::map<std::string, Bound> known = {};
   int signs = 0, smooth = 0;
   for (const testing::LexiconSign& sign : testing::lexicon_signs(text)) {
     const std::string& gloss = sign.gloss;
@@ -172,12 +178,14 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesContinuously) {
     Worst w = measure(rig_, r.clip);
     // SIGNWEAVE_SMOOTHNESS_REPORT=1 prints every sign's figures (the per-frame clearing is
     // sensitive: a change is judged on all signs of both rigs, not only the exempted ones).
+    const Worst tips = measure(rig_, r.clip, 0, -1, Track::Fingertips);
     if (std::getenv("SIGNWEAVE_SMOOTHNESS_REPORT"))
-      std::printf("smoothness %s %s %.1f %.1f (%s | %s)\n", GetParam(), gloss.c_str(), w.step_m * 1000.0f,
-                  w.change_m * 1000.0f, w.step_what.c_str(), w.change_what.c_str());
+      std::printf("smoothness %s %s %.1f %.1f (%s | %s) fingertips %.1f %.1f (%s | %s)\n", GetParam(), gloss.c_str(),
+                  w.step_m * 1000.0f, w.change_m * 1000.0f, w.step_what.c_str(), w.change_what.c_str(),
+                  tips.step_m * 1000.0f, tips.change_m * 1000.0f, tips.step_what.c_str(), tips.change_what.c_str());
     auto k = known.find(gloss);
     expect_smooth(gloss, w, k == known.end() ? Bound{} : k->second);
-    expect_smooth(gloss + " fingertips", measure(rig_, r.clip, 0, -1, Track::Fingertips), kFingertipBound);
+    expect_smooth(gloss + " fingertips", tips, kFingertipBound);
     smooth += w.step_m <= kMaxStepM && w.change_m <= kMaxStepChangeM;
     ++signs;
   }
@@ -220,6 +228,37 @@ TEST_P(MotionSmoothness, RestTransitionsMoveAtHumanSpeed) {
     }
   }
   EXPECT_GE(transitions, 220);
+  RecordProperty("worst_step_mm", std::to_string(worst.step_m * 1000.0f) + " " + worst.step_what);
+  RecordProperty("worst_change_mm", std::to_string(worst.change_m * 1000.0f) + " " + worst.change_what);
+}
+
+// A one-handed sign low on the far side of the body turns the thorax towards it (thorax_turn.h):
+// the whole clip, from the rest pose and back, with the turn eased in and out by the transitions,
+// keeps the wrists and elbows within the human bounds (5 hands x the stomach to below the waist x
+// touch, close, none: 60 clips a rig, most of them turned).
+TEST_P(MotionSmoothness, FarSideReachesWithTheTurnedThoraxMoveContinuously) {
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  const notation::HandShape shapes[] = {testing::flat(), testing::fist(), testing::index_point(), testing::fist(),
+                                        testing::index_point()};
+  const notation::Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+  Worst worst;
+  for (int shape = 0; shape < 5; ++shape)
+    for (notation::BodyLevel level : {notation::BodyLevel::Stomach, notation::BodyLevel::Belly,
+                                      notation::BodyLevel::Waist, notation::BodyLevel::BelowWaist})
+      for (notation::Contact c : {notation::Contact::Touch, notation::Contact::Close, notation::Contact::None}) {
+        notation::SignSpec s = testing::sign_at(shapes[shape], level, notation::Side::LeftBeside, c);
+        s.dominant.orientation.extended_finger = fingers[shape];
+        s.dominant.orientation.palm = {0, 0, -1};
+        SynthesisResult r = synth.sign(s, SynthesisOptions{});
+        ASSERT_TRUE(r.ok()) << r.errors[0].message;
+        const Worst w = measure(rig_, r.clip);
+        const std::string where = "shape " + std::to_string(shape) + " level " + std::to_string(static_cast<int>(level)) +
+                                  " contact " + std::to_string(static_cast<int>(c));
+        expect_smooth(where, w, Bound{});
+        if (w.step_m > worst.step_m) worst.step_m = w.step_m, worst.step_what = where + ": " + w.step_what;
+        if (w.change_m > worst.change_m) worst.change_m = w.change_m, worst.change_what = where + ": " + w.change_what;
+      }
   RecordProperty("worst_step_mm", std::to_string(worst.step_m * 1000.0f) + " " + worst.step_what);
   RecordProperty("worst_change_mm", std::to_string(worst.change_m * 1000.0f) + " " + worst.change_what);
 }
