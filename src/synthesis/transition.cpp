@@ -863,10 +863,14 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
 // routed through via-poses whose IK lifted the elbow out to the side: the project avatar's right
 // fist to the left hip swung out 21 cm to the right at chest height (upper arm abducted 54 deg)
 // and took 1.90 s.
+// `next_try`: the first of kHandPathTries to try; on return (false), the first one not known to
+// be deeper than the ends (its path took more states than the direct one), for a retry.
 bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                     std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, bool retry,
-                    TransitionPlan* out) {
-  for (const HandPathTry& attempt : kHandPathTries) {
+                    int* next_try, TransitionPlan* out) {
+  constexpr int kTries = static_cast<int>(sizeof kHandPathTries / sizeof kHandPathTries[0]);
+  for (; *next_try < kTries; ++*next_try) {
+    const HandPathTry& attempt = kHandPathTries[*next_try];
     bool deeper = false;
     if (plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
                              attempt.search_swivel, retry, out, &deeper))
@@ -899,9 +903,13 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const bool has_rest = static_cast<int>(ctx.rest_locals.size()) == J;
   const bool rest_at_start = has_rest && std::memcmp(from, ctx.rest_locals.data(), pose_bytes) == 0;
   const bool rest_at_end = has_rest && std::memcmp(to, ctx.rest_locals.data(), pose_bytes) == 0;
-  if (ctx.options.avoid_collisions && rest_at_start != rest_at_end && direct.states_exceed(kMinTransitionStates)) {
+  // The hand path's tries already known to be deeper than the ends are not tried again below.
+  int hand_try = 0;
+  const bool hand_path_tried = ctx.options.avoid_collisions && rest_at_start != rest_at_end &&
+                               direct.states_exceed(kMinTransitionStates);
+  if (hand_path_tried) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, false, &hand_path))
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, false, &hand_try, &hand_path))
       return hand_path;
   }
   plan.lmax_m = direct.length_m();  // transition_path_m
@@ -941,9 +949,9 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   if (direct_excess <= kNothingAdded_m) return plan;
   // A rest transition whose direct path cuts through the body: the hand's own path, in front of
   // the body, where one is clear (plan_hand_path's retry), before any via-pose.
-  if (rest_at_start != rest_at_end) {
+  if (hand_path_tried) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, true, &hand_path))
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, true, &hand_try, &hand_path))
       return hand_path;
   }
 
