@@ -544,8 +544,8 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
 // the direct slerp or to via-poses whose IK lifted the elbow out to the side) the wrist went
 // 10.6 / 11.4 cm out (reference / project avatar; the lead's fist to the left hip, below, 20.8
 // cm out at chest height, the upper arm abducted 54 deg, 1.90 s each way), and the transitions
-// took 1.33 / 1.17 s at the median, 1.80 / 1.73 s at the 90th percentile. Measured now: 2.3 /
-// 3.7 cm out; median 0.87 / 0.83 s, 90th percentile 1.07 / 1.07 s. Bounds: 4 cm (the wrist's
+// took 1.33 / 1.17 s at the median, 1.80 / 1.73 s at the 90th percentile. Measured now: 2.0 /
+// 2.9 cm out; median 0.87 / 0.83 s, 90th percentile 1.07 / 1.07 s. Bounds: 4 cm (the wrist's
 // sway as the arm turns across); median 0.95 s and 90th percentile 1.2 s (the hand's path at
 // its tempo, 2-4 frames of margin; the few touches still routed round, at the far neck and
 // shoulders, up to 3.8 s, are what the 10% leaves).
