@@ -420,10 +420,11 @@ constexpr float kHandPathForwardBow_m = 0.05f;
 // near_swivel_rad), at the same bow and then bowed 12, 20 and 28 cm forward: a signer brings the
 // hand across in front of the body. Measured on the far side's rest transitions (5 hands x 12
 // levels x 3 contacts, both rigs): 12 cm clears the flat hand at the far ear on the project
-// avatar (5 cm: forearm 12 mm in the head); the searched swivel alone clears the fist at the
-// far hip; 28 cm the avatar's fist touching the far shoulder top (20 cm: the hand 14 mm in the
-// torso; routed, it took 2.17 s, now 1.30 s). The wider bows apply to an arm whose wrist travels more than 20 cm: the other arm,
-// moved a few centimetres by a turning trunk, keeps its 5 cm.
+// avatar (5 cm: forearm 12 mm in the head); 28 cm the avatar's fist touching the far shoulder
+// top (20 cm: the hand 14 mm in the torso; routed, it took 2.17 s, now 1.30 s). (The fist at the
+// far hip needs no retry: solved in the turning trunk's frame, the first form is clear.) The
+// wider bows apply to an arm whose wrist travels more than 20 cm: the other arm, moved a few
+// centimetres by a turning trunk, keeps its 5 cm.
 struct HandPathTry {
   float bow_m;
   bool search_swivel;
