@@ -855,18 +855,15 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
 }
 
 // BOWS_COMMENT
-// The hand's path of a rest transition (plan_hand_path_bowed), first as its waypoints were
-// always placed (bow 5 cm, swivel interpolated): taken when shorter than the direct path and
-// clear. `retry`: the direct path is not clear of the body (plan_transition would route it round
-// with via-poses). Then the hand's path is taken even when it takes more states than the direct
-// path (which is not a path the arm can take), and where its first form is not clear either, it
-// is tried again with the swivel searched with the body model round the interpolated one and
-// bowed further forward (12, 20, 28 cm), the first clear one taken. Before, those transitions were
-// routed through via-poses whose IK lifted the elbow out to the side: the project avatar's right
-// fist to the left hip swung out 21 cm to the right at chest height (upper arm abducted 54 deg)
-// and took 1.90 s.
-// `next_try`: the first of kHandPathTries to try; on return (false), the first one not known to
-// be deeper than the ends (its path took more states than the direct one), for a retry.
+// The hand's path of a rest transition (plan_hand_path_bowed) through kHandPathTries in order,
+// from `*next_try`: the first that adds no depth beyond the end poses is taken when it takes fewer
+// states than the direct path, or, with `retry` (the direct path is not clear of the body and
+// plan_transition would route it round with via-poses, which is not a path a signer's arm takes),
+// whatever its states. A try that is clear of the body but not shorter (without `retry`) ends the
+// search and `*next_try` stays on it, so the retry starts there and does not repeat the tries
+// found deeper. Before the retries, the far side's rest transitions were routed through
+// via-poses whose IK lifted the elbow out to the side: the project avatar's right fist to the
+// left hip swung out 21 cm to the right at chest height (upper arm abducted 54 deg), 1.90 s.
 bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                     std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, bool retry,
                     int* next_try, TransitionPlan* out) {
