@@ -414,17 +414,74 @@ std::vector<std::uint8_t> transition_exempt(int k, std::uint8_t exempt_from, std
 // trunk on the way up to the shoulder and the chin (4-7 mm on the project avatar), and those
 // rest transitions fell back to the direct path.
 constexpr float kHandPathForwardBow_m = 0.05f;
+// Where that path is not clear (a wrist line from the thigh to the far ear or hip crosses the
+// face or the belly; the interpolated swivel swings the elbow through the chest), it is tried
+// again, the swivel searched with the body model round the interpolated one (arm_ik.h
+// near_swivel_rad), at the same bow and then bowed 12, 20 and 28 cm forward: a signer brings the
+// hand across in front of the body. Measured on the far side's rest transitions (5 hands x 12
+// levels x 3 contacts, both rigs): 12 cm clears the flat hand at the far ear on the project
+// avatar (5 cm: forearm 12 mm in the head); 28 cm the avatar's fist touching the far shoulder
+// top (20 cm: the hand 14 mm in the torso; routed, it took 2.17 s, now 1.30 s). (The fist at the
+// far hip needs no retry: solved in the turning trunk's frame, the first form is clear.) The
+// wider bows apply to an arm whose wrist travels more than 20 cm: the other arm, moved a few
+// centimetres by a turning trunk, keeps its 5 cm.
+struct HandPathTry {
+  float bow_m;
+  bool search_swivel;
+};
+constexpr HandPathTry kHandPathTries[] = {
+    {kHandPathForwardBow_m, false}, {kHandPathForwardBow_m, true}, {0.12f, true}, {0.20f, true}, {0.28f, true}};
+constexpr float kHandPathWideBowFrom_m = 0.20f;
+
+// The frame of the trunk the arms hang from (the upper chest), in one pose of a transition whose
+// ends turn the trunk differently (thorax_turn.h), relative to the rest pose's trunk, in which the
+// arm IK and its body model work: `rotation` turns the rest trunk's directions into this pose's,
+// to_flat maps a model-space point of this pose into the rest trunk's frame, and `locals` is the
+// pose with its trunk chain (the carrier and its ancestors) put back to the rest pose's. Not
+// `turned` (both ends' trunks the same bits, as in every transition without a turn): identity.
+struct ThoraxFrame {
+  bool turned = false;
+  glm::quat rotation{1, 0, 0, 0};
+  glm::vec3 pivot_posed{0.0f}, pivot_flat{0.0f};
+  std::vector<glm::quat> locals;
+  glm::vec3 to_flat(const glm::vec3& p) const {
+    return turned ? glm::conjugate(rotation) * (p - pivot_posed) + pivot_flat : p;
+  }
+};
+ThoraxFrame thorax_frame(const SynthContext& ctx, const PoseBuilder& posed, const glm::quat* from,
+                         const glm::quat* to, const glm::quat* locals) {
+  const Rig& rig = ctx.rig;
+  const int J = rig.joint_count;
+  ThoraxFrame f;
+  const ArmRig& a = rig.arms[kRight];
+  const int first_arm_joint = a.shoulder >= 0 ? a.shoulder : a.upper;
+  if (static_cast<int>(ctx.rest_locals.size()) != J || first_arm_joint < 0) return f;
+  const int carrier = rig.parent[first_arm_joint];
+  for (int j = carrier; j >= 0; j = rig.parent[j])
+    if (std::memcmp(&from[j], &to[j], sizeof(glm::quat)) != 0) f.turned = true;
+  if (!f.turned) return f;
+  f.locals.assign(locals, locals + J);
+  for (int j = carrier; j >= 0; j = rig.parent[j]) f.locals[static_cast<size_t>(j)] = ctx.rest_locals[static_cast<size_t>(j)];
+  PoseBuilder flat(rig);
+  flat.set_from_local(f.locals.data());
+  f.rotation = posed.delta(carrier) * glm::conjugate(flat.delta(carrier));
+  f.pivot_posed = posed.position(carrier);
+  f.pivot_flat = flat.position(carrier);
+  return f;
+}
 
 // The elbow's swivel in a posed arm, in solve_arm's convention (arm_ik.cpp solve_chain): the
 // angle of the elbow about the shoulder-wrist axis, 0 with the elbow down, positive out to the
-// arm's side.
-float pose_swivel(const Rig& rig, Side side, const PoseBuilder& pose) {
+// arm's side. `frame`: the turn of the trunk the arm hangs from (the body's directions turn with
+// it; see ThoraxFrame below).
+float pose_swivel(const Rig& rig, Side side, const PoseBuilder& pose, const glm::quat& frame = glm::quat(1, 0, 0, 0)) {
   const ArmRig& a = rig.arms[side];
+  const glm::vec3 up = frame * rig.up, left = frame * rig.left, forward = frame * rig.forward;
   const glm::vec3 shoulder = pose.position(a.upper);
-  const glm::vec3 axis = safe_normalize(pose.position(a.hand) - shoulder, rig.forward);
-  const glm::vec3 out_dir = side == kLeft ? rig.left : -rig.left;
-  glm::vec3 down = reject(-rig.up, axis);
-  if (glm::length(down) < 1e-3f) down = reject(-rig.forward, axis);
+  const glm::vec3 axis = safe_normalize(pose.position(a.hand) - shoulder, forward);
+  const glm::vec3 out_dir = side == kLeft ? left : -left;
+  glm::vec3 down = reject(-up, axis);
+  if (glm::length(down) < 1e-3f) down = reject(-forward, axis);
   down = glm::normalize(down);
   const glm::vec3 outp = safe_normalize(reject(reject(out_dir, axis), down), glm::cross(axis, down));
   const glm::vec3 elbow = reject(pose.position(a.lower) - shoulder, axis);
@@ -443,7 +500,9 @@ float pose_swivel(const Rig& rig, Side side, const PoseBuilder& pose) {
 // already solved, whose wrist angles this one continues (arm_ik.h), or none yet.
 std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::quat* from, const glm::quat* to,
                                           const PoseBuilder& pf, const PoseBuilder& pt, float s,
-                                          std::array<ArmPose, 2>* previous, bool has_previous) {
+                                          std::array<ArmPose, 2>* previous, bool has_previous, float bow_m,
+                                          bool search_swivel, const ThoraxFrame& frame_from,
+                                          const ThoraxFrame& frame_to) {
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
   std::vector<glm::quat> at(J);
@@ -451,6 +510,15 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
   PoseBuilder pa(rig);
   pa.set_from_local(at.data());
   std::vector<glm::quat> waypoint = at;
+  // A trunk that turns on the way (thorax_turn.h: a key pose low on the far side) carries the
+  // arms with it; the arm IK works with the trunk in its rest pose, so each arm is solved in the
+  // trunk's frame at this waypoint (the thorax frame) and its local rotations, relative to the
+  // turned trunk, are the same there. Solved in model space instead, the shoulder's own turn was
+  // missing from the wrist: the waypoints' wrists 4-6 cm off the path.
+  const ThoraxFrame frame_at = thorax_frame(ctx, pa, from, to, at.data());
+  PoseBuilder pflat(rig);
+  if (frame_at.turned) pflat.set_from_local(frame_at.locals.data());
+  const PoseBuilder& solve_pose = frame_at.turned ? pflat : pa;
   for (int side_index = 0; side_index < 2; ++side_index) {
     const Side side = static_cast<Side>(side_index);
     const ArmRig& a = rig.arms[side_index];
@@ -458,15 +526,25 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
     // An arm that stays (the other arm at rest) keeps its slerp: 1 cm is below what a frame shows.
     if (glm::length(wrist_to - wrist_from) < 0.01f) continue;
     ArmTarget t;
-    t.point = wrist_from + s * (wrist_to - wrist_from) + kHandPathForwardBow_m * std::sin(3.14159265f * s) * rig.forward;
+    const float arm_bow_m = glm::length(wrist_to - wrist_from) > kHandPathWideBowFrom_m ? bow_m : kHandPathForwardBow_m;
+    t.point = frame_at.to_flat(wrist_from + s * (wrist_to - wrist_from) +
+                               arm_bow_m * std::sin(3.14159265f * s) * rig.forward);
     t.contact_offset = glm::vec3(0.0f);
-    t.hand_delta = pa.delta(a.hand);
+    t.hand_delta = glm::conjugate(frame_at.rotation) * pa.delta(a.hand);
     t.auto_swivel = false;
-    const float swivel_from = pose_swivel(rig, side, pf);
-    float turn = pose_swivel(rig, side, pt) - swivel_from;  // the shorter way round
+    const float swivel_from = pose_swivel(rig, side, pf, frame_from.rotation);
+    float turn = pose_swivel(rig, side, pt, frame_to.rotation) - swivel_from;  // the shorter way round
     if (turn > 3.14159265f) turn -= 6.28318531f;
     if (turn < -3.14159265f) turn += 6.28318531f;
     t.swivel_rad = swivel_from + s * turn;
+    if (search_swivel) {
+      // A retry's arm: the swivel searched round the interpolated one, with the body model,
+      // so the elbow keeps out of the trunk where the interpolated swivel does not.
+      t.auto_swivel = true;
+      t.body = &ctx.body;
+      t.has_near_swivel = true;
+      t.near_swivel_rad = t.swivel_rad;
+    }
     ArmPose& arm = (*previous)[side_index];
     if (has_previous) {
       // Wrist angles move at most 0.8 rad from the neighbouring waypoint (a quarter of the way
@@ -476,7 +554,7 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
     }
     arm = solve_arm(rig, side, t);
     // `at` posed is pa as it stands (this loop changes no joint of it): a copy, not a second FK.
-    PoseBuilder solved = pa;
+    PoseBuilder solved = solve_pose;
     apply_arm(rig, side, arm, &solved);
     for (int j : {a.shoulder, a.upper, a.lower, a.hand})
       if (j >= 0) waypoint[j] = solved.local_rotation(j);  // only the arm's joints are taken
@@ -655,8 +733,10 @@ class DirectPathLength {
 // pose, 28). Taken (true) only when it needs fewer states than the direct path and adds no depth, of
 // either kind, beyond the end poses' own (0.5 mm): otherwise the direct path and its routing
 // stand, so the collision remedies are unchanged wherever the hand's path is not clear.
-bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
-                    std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, TransitionPlan* out) {
+bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
+                          std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, float bow_m,
+                          bool search_swivel, bool allow_longer, TransitionPlan* out, bool* deeper) {
+  *deeper = false;
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
@@ -666,10 +746,13 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   PoseBuilder pf(rig), pt(rig);
   pf.set_from_local(from);
   pt.set_from_local(to);
+  const ThoraxFrame frame_from = thorax_frame(ctx, pf, from, to, from);
+  const ThoraxFrame frame_to = thorax_frame(ctx, pt, from, to, to);
   for (int i = 0; i < kHandPathWaypoints; ++i) {
     const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
     fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
-    waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0);
+    waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0, bow_m, search_swivel,
+                                      frame_from, frame_to);
   }
   const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
@@ -690,7 +773,7 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   TransitionPlan p;
   p.lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p.k = transition_states(p.lmax_m, fps, speed);
-  if (!direct->states_exceed(p.k)) return false;
+  if (!allow_longer && !direct->states_exceed(p.k)) return false;
   // One pass over the states: the longest joint step of a frame (plan_chain's peak rule) and
   // the depths of each kind (depths_by_kind's measure).
   // Each state's deepest check in max_penetration's terms, for the memo of the phrase's final
@@ -746,7 +829,7 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   measure(&step_m, &d, peak_step_m, finger_peak_m);
   if (step_m > peak_step_m || finger_step_m > finger_peak_m) {
     p.k = static_cast<int>(std::ceil(p.k * std::max(step_m / peak_step_m, finger_step_m / finger_peak_m)));
-    if (!direct->states_exceed(p.k)) return false;
+    if (!allow_longer && !direct->states_exceed(p.k)) return false;
     sample(p.k, &p.frames);
     p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
     measure(&step_m, &d, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
@@ -756,8 +839,10 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
   const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
   constexpr float kNothingAdded_m = 0.0005f;  // plan_transition's: sampling
   if (d.hand_m > std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m ||
-      d.arm_m > std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m)
+      d.arm_m > std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m) {
+    *deeper = true;
     return false;
+  }
   p.max_penetration_m = std::max(d.hand_m, d.arm_m);
   if (PenetrationMemo* memo = ctx.penetration_memo)
     for (int i = 0; i + 1 < p.k; ++i) {
@@ -767,6 +852,32 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
     }
   *out = std::move(p);
   return true;
+}
+
+// BOWS_COMMENT
+// The hand's path of a rest transition (plan_hand_path_bowed) through kHandPathTries in order,
+// from `*next_try`: the first that adds no depth beyond the end poses is taken when it takes fewer
+// states than the direct path, or, with `retry` (the direct path is not clear of the body and
+// plan_transition would route it round with via-poses, which is not a path a signer's arm takes),
+// whatever its states. A try that is clear of the body but not shorter (without `retry`) ends the
+// search and `*next_try` stays on it, so the retry starts there and does not repeat the tries
+// found deeper. Before the retries, the far side's rest transitions were routed through
+// via-poses whose IK lifted the elbow out to the side: the project avatar's right fist to the
+// left hip swung out 21 cm to the right at chest height (upper arm abducted 54 deg), 1.90 s.
+bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
+                    std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, bool retry,
+                    int* next_try, TransitionPlan* out) {
+  constexpr int kTries = static_cast<int>(sizeof kHandPathTries / sizeof kHandPathTries[0]);
+  for (; *next_try < kTries; ++*next_try) {
+    const HandPathTry& attempt = kHandPathTries[*next_try];
+    bool deeper = false;
+    if (plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
+                             attempt.search_swivel, retry, out, &deeper))
+      return true;
+    // Not shorter than the direct path: the later tries, bowed further, are longer still.
+    if (!deeper) return false;
+  }
+  return false;
 }
 
 }  // namespace
@@ -791,9 +902,14 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const bool has_rest = static_cast<int>(ctx.rest_locals.size()) == J;
   const bool rest_at_start = has_rest && std::memcmp(from, ctx.rest_locals.data(), pose_bytes) == 0;
   const bool rest_at_end = has_rest && std::memcmp(to, ctx.rest_locals.data(), pose_bytes) == 0;
-  if (ctx.options.avoid_collisions && rest_at_start != rest_at_end && direct.states_exceed(kMinTransitionStates)) {
+  // The hand path's tries already known to be deeper than the ends are not tried again below.
+  int hand_try = 0;
+  const bool hand_path_tried = ctx.options.avoid_collisions && rest_at_start != rest_at_end &&
+                               direct.states_exceed(kMinTransitionStates);
+  if (hand_path_tried) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, &hand_path)) return hand_path;
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, false, &hand_try, &hand_path))
+      return hand_path;
   }
   plan.lmax_m = direct.length_m();  // transition_path_m
   plan.k = transition_states(plan.lmax_m, fps, speed);
@@ -830,6 +946,13 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const KindDepths direct_depths = depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data());
   const float direct_excess = excess_of(direct_depths);
   if (direct_excess <= kNothingAdded_m) return plan;
+  // A rest transition whose direct path cuts through the body: the hand's own path, in front of
+  // the body, where one is clear (plan_hand_path's retry), before any via-pose.
+  if (hand_path_tried) {
+    TransitionPlan hand_path;
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, true, &hand_try, &hand_path))
+      return hand_path;
+  }
 
   // Route through a via-pose: the middle state with the offending hand(s) pulled out of the body
   // (along the escape direction and forward), re-solved by arm IK; orientation and fingers kept.

@@ -15,7 +15,9 @@
 // cuts through, one or two waypoint poses with the wrists held in front of the trunk, the path a
 // chain of slerps through them with rounded corners (the arm comes forward, then across).
 // From and back to the rest pose, the hand takes its own path when that is clear of the body:
-// waypoints with the wrist on the (forward-bowed) line between its ends, the arm solved by IK
+// waypoints with the wrist on the (forward-bowed) line between its ends, the arm solved by IK in
+// the frame of the (possibly turning) trunk; where that is not clear, again with the swivel
+// searched and bowed further forward, in front of the body, before any via-pose
 // (plan_hand_path in transition.cpp; docs/SYNTHESIS.md, Transitions).
 #pragma once
 

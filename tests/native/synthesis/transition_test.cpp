@@ -156,7 +156,11 @@ TEST(SynthesisTransition, ShortestPathNeverFlips) {
 // their peak: ME 0.73 / 0.83 s, median 0.70 / 0.73 s, where a signer raises the hand to the chest
 // in about 0.6-0.8 s. Bounds, with two frames of margin: ME's raise and lowering within 0.9 s
 // and the median of all within 0.8 s on both rigs (the direct slerped path fails both, and so
-// does the hand's path timed by its fingertips).
+// does the hand's path timed by its fingertips). The slowest: where the hand's first path was
+// not clear of the body, it fell back to the direct path (40 of the 564); tried again with the
+// swivel searched and bowed further forward, 26 are left and the project avatar's slowest went
+// 1.47 -> 1.27 s (DEAF); on the reference humanoid MORNING stays 2.13 s (its left arm carries
+// the right elbow; routed, docs/SYNTHESIS.md Known issues). Bounds: 1.35 s / 2.2 s.
 TEST(SynthesisTransition, RestTransitionsTakeTheHandsShortPath) {
   std::string text;
   if (!read_text_file(std::string(SIGNWEAVE_SOURCE_DIR) + "/data/ase/lexicon.jsonl", &text))
@@ -192,6 +196,8 @@ TEST(SynthesisTransition, RestTransitionsTakeTheHandsShortPath) {
     std::sort(durations_s.begin(), durations_s.end());
     const double median_s = durations_s[durations_s.size() / 2];
     EXPECT_LE(median_s, 0.8) << rig_name << ": median rest transition";
+    EXPECT_LE(durations_s.back(), rig_name == "avatar" ? 1.35 : 2.2) << rig_name << ": slowest rest transition";
+    RecordProperty(rig_name + "_slowest_rest_transition_s", std::to_string(durations_s.back()));
     RecordProperty(rig_name + "_median_rest_transition_s", std::to_string(median_s));
   }
 }
