@@ -11,6 +11,8 @@
 // kFingertipBound).
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -300,6 +302,80 @@ TEST_P(MotionSmoothness, AlphabetsAndLetterPairsMoveContinuously) {
         expect_smooth(pair + " fingertips", measure(rig_, r.clip, 0, -1, Track::Fingertips), kFingertipBound);
       }
   }
+}
+
+
+// ---- physical-units sweep (inserted) ----
+struct PhysicalWorst {
+  float speed = 0.0f, accel = 0.0f;
+  std::string speed_what, accel_what;
+};
+const char* segment_kind_name(ClipSegment::Kind k) {
+  switch (k) {
+    case ClipSegment::Kind::Sign: return "sign";
+    case ClipSegment::Kind::Letter: return "letter";
+    case ClipSegment::Kind::Transition: return "transition";
+    case ClipSegment::Kind::Hold: return "hold";
+    case ClipSegment::Kind::Pause: return "pause";
+  }
+  return "?";
+}
+std::string where_in(const Clip& c, int f) {
+  const double t = f / double(c.fps);
+  for (const ClipSegment& s : c.segments)
+    if (t >= s.start_s - 1e-6 && t <= s.end_s + 1e-6)
+      return std::string(segment_kind_name(s.kind)) + " " + s.label + " (" + std::to_string(t - s.start_s).substr(0, 5) +
+             " of " + std::to_string(s.end_s - s.start_s).substr(0, 5) + " s)";
+  return "?";
+}
+PhysicalWorst measure_physical(const Rig& rig, const Clip& clip) {
+  PhysicalWorst w;
+  PoseBuilder pb(rig);
+  const int J = rig.joint_count;
+  const int W = std::max(1, static_cast<int>(std::lround(clip.fps / 30.0f)));
+  const float win_s = W / clip.fps;
+  std::vector<std::array<glm::vec3, 4>> pos(static_cast<size_t>(clip.frame_count));
+  const char* names[4] = {"left wrist", "left elbow", "right wrist", "right elbow"};
+  for (int f = 0; f < clip.frame_count; ++f) {
+    pb.set_from_local(&clip.rotations[static_cast<size_t>(f) * J]);
+    pos[f] = {pb.position(rig.arms[kLeft].hand), pb.position(rig.arms[kLeft].lower), pb.position(rig.arms[kRight].hand),
+              pb.position(rig.arms[kRight].lower)};
+  }
+  for (int f = W; f < clip.frame_count; ++f)
+    for (int k = 0; k < 4; ++k) {
+      const float v = glm::length(pos[f][k] - pos[f - W][k]) / win_s;
+      if (v > w.speed) w.speed = v, w.speed_what = std::string(names[k]) + " f" + std::to_string(f) + " " + where_in(clip, f);
+      if (f >= 2 * W) {
+        const float a = glm::length(pos[f][k] - 2.0f * pos[f - W][k] + pos[f - 2 * W][k]) / (win_s * win_s);
+        if (a > w.accel)
+          w.accel = a, w.accel_what = std::string(names[k]) + " f" + std::to_string(f - W) + " " + where_in(clip, f - W);
+      }
+    }
+  return w;
+}
+TEST_P(MotionSmoothness, SweepReport) {
+  if (!std::getenv("SIGNWEAVE_SWEEP")) GTEST_SKIP();
+  std::string text;
+  if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
+  Synthesizer synth(avatar_);
+  int over = 0, total = 0;
+  for (const testing::LexiconSign& sign : testing::lexicon_signs(text))
+    for (float fps : {25.0f, 30.0f, 60.0f})
+      for (float speed : {0.8f, 1.0f, 1.25f}) {
+        SynthesisOptions o;
+        o.start_from_rest = std::getenv("SIGNWEAVE_SWEEP_REST") != nullptr;
+        o.fps = fps;
+        o.speed = speed;
+        SynthesisResult r = synth.phrase(sign.text.items, o);
+        ASSERT_TRUE(r.ok());
+        PhysicalWorst w = measure_physical(rig_, r.clip);
+        ++total;
+        const bool bad = w.speed > 3.0f || w.accel > 50.0f;
+        over += bad;
+        std::printf("sweep %s %s %g %g %.2f %.1f %s | %s%s\n", GetParam(), sign.gloss.c_str(), fps, speed, w.speed, w.accel,
+                    w.speed_what.c_str(), w.accel_what.c_str(), bad ? " OVER" : "");
+      }
+  std::printf("sweep %s over %d of %d\n", GetParam(), over, total);
 }
 
 INSTANTIATE_TEST_SUITE_P(Rigs, MotionSmoothness, ::testing::Values("avatar", "reference"));
