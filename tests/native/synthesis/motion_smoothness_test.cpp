@@ -362,6 +362,11 @@ TEST_P(MotionSmoothness, SweepReport) {
   for (const testing::LexiconSign& sign : testing::lexicon_signs(text))
     for (float fps : {25.0f, 30.0f, 60.0f})
       for (float speed : {0.8f, 1.0f, 1.25f}) {
+        if (const char* tr = std::getenv("SIGNWEAVE_SWEEP_TRACE")) {
+          char buf[64];
+          std::snprintf(buf, sizeof buf, "%s %s %g %g", GetParam(), sign.gloss.c_str(), fps, speed);
+          if (std::string(buf) != tr) continue;
+        }
         SynthesisOptions o;
         o.start_from_rest = std::getenv("SIGNWEAVE_SWEEP_REST") != nullptr;
         o.fps = fps;
@@ -369,6 +374,21 @@ TEST_P(MotionSmoothness, SweepReport) {
         SynthesisResult r = synth.phrase(sign.text.items, o);
         ASSERT_TRUE(r.ok());
         PhysicalWorst w = measure_physical(rig_, r.clip);
+        if (const char* tr = std::getenv("SIGNWEAVE_SWEEP_TRACE")) {
+          char buf[64];
+          std::snprintf(buf, sizeof buf, "%s %s %g %g", GetParam(), sign.gloss.c_str(), fps, speed);
+          if (std::string(buf) == tr) {
+            PoseBuilder pb(rig_);
+            glm::vec3 pe(0.0f), pw(0.0f);
+            for (int f = 0; f < r.clip.frame_count; ++f) {
+              pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * rig_.joint_count]);
+              glm::vec3 e = pb.position(rig_.arms[kRight].lower), wr = pb.position(rig_.arms[kRight].hand);
+              std::printf("f%d t=%.3f elbow %.3f %.3f %.3f step %.1f mm wrist step %.1f mm %s\n", f, f / fps, e.x, e.y, e.z,
+                          f ? 1000 * glm::length(e - pe) : 0.0f, f ? 1000 * glm::length(wr - pw) : 0.0f, where_in(r.clip, f).c_str());
+              pe = e, pw = wr;
+            }
+          }
+        }
         ++total;
         const bool bad = w.speed > 3.0f || w.accel > 50.0f;
         over += bad;
