@@ -1640,8 +1640,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // ramp does not shrink with the speed factor: a correction is not part of the written movement,
   // and at speed 1.25 it already has a fifth less of the sign's time to come on in (scaling it
   // with 1/speed, 20 frames at 60 fps x 0.8, reached over the sign's key pose into frames that
-  // then needed their own fixes: TELL 5.6 m/s; measured over the lexicon at 9 settings x 2 rigs:
-  // 26 sign-settings over the human bounds against 20 without the scaling).
+  // then needed their own fixes: TELL 5.6 m/s; measured over the lexicon from the key pose at 9
+  // settings x 2 rigs, 2 rounds: 23 sign-settings over the human bounds with 8-frame ramps, 20
+  // with fixed-time ones, 26 with them scaled by 1/speed).
   constexpr float kRampS = 8.0f / 30.0f;
   const int kRamp = std::max(1, static_cast<int>(std::lround(kRampS * fps)));
   const int kSwivelRamp = kRamp;
@@ -1653,10 +1654,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // deep (kRampOnlyClearM): the corrections a final solve applied came on at once (OLD at 60 fps:
   // a -0.3 rad swivel fix at one frame against the ramped +1.5, the elbow 8 cm out and back,
   // 149 m/s^2; TELL at 25 fps: the sign's first frame without the fix its neighbour had, 15 cm).
-  // Measured over the lexicon, 141 signs x 9 settings x 2 rigs, wrists and elbows over 3 m/s or
-  // 50 m/s^2 (MotionSmoothness.EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed): 20
-  // sign-settings with the 2 rounds as before, 18 with this third; more rounds of the same kind
-  // do not converge (3: 18, 4: 17 with every round correcting at 2 mm).
+  // Measured over the lexicon from the key pose, 141 signs x 9 settings x 2 rigs, wrists and
+  // elbows over 3 m/s or 50 m/s^2: 20 sign-settings with the 2 rounds as before, 18 with this
+  // third (a third round correcting at 2 mm like the others: also 18, but HOSPITAL's small
+  // last fixes came on at once, 34 -> 14 m/s^2 with the net; a fourth round: 19).
   constexpr int kRampRounds = 3;
   for (int round = 0; round < kRampRounds; ++round) {
   bool any_turn = false, any_swivel = false;
