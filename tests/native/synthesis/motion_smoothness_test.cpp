@@ -397,7 +397,8 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed) {
   //   timing); 30 fps samples it as 46 m/s^2, 60 fps as up to 68.
   // - TEACHER (reference; 0.8 and 60 fps, the left elbow in the sign's last movement, up to
   //   78 m/s^2; 35 at 30 fps x 1): the elbow speeds up over the movement's last 0.1 s while
-  //   the wrist slows, and stops within a frame (its swivel, not the hand's path); not found yet.
+  //   the wrist slows, and stops within a frame: the wrist turns through a flip there (6 rad/s
+  //   x speed) and the arm meets the free solution where that ends.
   // - UNDERSTAND (both rigs, 30 fps x 1.25, the elbow in the transition from rest): 32 m/s^2 at
   //   speed 1, and the speed factor scales every duration, so accelerations by its square
   //   (x 1.56): a faster signer, not a sampling artefact.
