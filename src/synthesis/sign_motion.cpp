@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <limits>
@@ -1369,7 +1370,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
   auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
                        PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel, float prefer,
-                       float min_gain_m) {
+                       float min_gain_m, float clear_m) {
     // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
     // within its limits, and the hand must not turn into the body instead.
     auto depth_of = [&]() {
@@ -1383,7 +1384,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       pb->finalize();
       return depth_of();
     };
-    if (arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m <= 0.002f) return;
+    if (arm_penetration(ctx.body, *pb, plan.side, true, plan.exempt_trunk, check_forearm).depth_m <= clear_m) return;
     float depth = depth_of();
     const float base = t->swivel_rad;
     const ArmPose base_pose = solve_arm(rig, plan.side, *t);
@@ -1474,6 +1475,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // `redo` (second pass): only the frames whose orientation or swivel the ramps changed are
   // solved again; the others would come out identical (every frame is solved from scratch), and
   // re-solving them doubled the time of every sign with one corrected frame.
+  bool ramp_only = false;  // the last ramp round: ramp the earlier corrections, add none
+  // In it, only an arm deeper than kRampOnlyClearM is still corrected (at once): the lexicon's
+  // arm depth bound, 5 mm, less 1 mm of margin. Without that net the ramped residuals left
+  // THANK-YOU's and TELL's forearms 9.9 mm and GOOD's 10.9 mm in the torso on the reference
+  // humanoid (25 fps x 1, 30 fps x 1.25); with it at 2 mm (every round alike) the one-frame
+  // fixes stayed (OLD above).
+  constexpr float kRampOnlyClearM = 0.004f;
   auto solve_frames = [&](const std::vector<char>* redo) {
     if (!redo || (*redo)[0]) {
       out->max_reach_error_m = 0.0f;
@@ -1581,7 +1589,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         if (ctx.options.avoid_collisions)
           clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i],
                     swivel_ramped[f][i] > 0.05f ? 1.0f : swivel_ramped[f][i] < -0.05f ? -1.0f : 0.0f,
-                    moving ? kMinSwivelGainM : 0.0f);
+                    moving ? kMinSwivelGainM : 0.0f, ramp_only ? kRampOnlyClearM : 0.002f);
       }
       pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
       out->exempt[f] = exempt;
@@ -1625,13 +1633,32 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // 17 cm in one frame). The offsets are ramped the same way over kSwivelRamp frames and added
   // to the frames' swivels before the second solve; clear_arm then finds those frames clear
   // and leaves them alone.
-  constexpr int kRamp = 8;
-  constexpr int kSwivelRamp = 8;  // 0.27 s at 30 fps: a 1.2 rad fix moves the elbow < 4 cm/frame
+  // The ramps are a motion in seconds, not in frames: kRampS is the 8 frames they spanned at
+  // 30 fps (0.27 s: a 1.2 rad swivel fix moves the elbow < 4 cm per 1/30 s). Counted in frames,
+  // the same correction came on twice as fast at 60 fps (THANK-YOU's elbow 4.3 m/s at 60 fps x
+  // 1.25 on the reference humanoid) and the frame rate decided which frames a ramp reached. The
+  // ramp does not shrink with the speed factor: a correction is not part of the written movement,
+  // and at speed 1.25 it already has a fifth less of the sign's time to come on in (scaling it
+  // with 1/speed, 20 frames at 60 fps x 0.8, reached over the sign's key pose into frames that
+  // then needed their own fixes: TELL 5.6 m/s; measured over the lexicon from the key pose at 9
+  // settings x 2 rigs, 2 rounds: 23 sign-settings over the human bounds with 8-frame ramps, 20
+  // with fixed-time ones, 26 with them scaled by 1/speed).
+  constexpr float kRampS = 8.0f / 30.0f;
+  const int kRamp = std::max(1, static_cast<int>(std::lround(kRampS * fps)));
+  const int kSwivelRamp = kRamp;
   // The second solve can still find a frame that needs a correction (the corrections of the two
   // hands interact: BOOK's palms together, the left elbow cleared for 3 frames, 11 cm change of
   // step), and that one again came on at once; so the residual corrections are ramped and solved
   // again, up to kRampRounds times (each round re-solves only the frames it changed).
-  constexpr int kRampRounds = 2;
+  // The last round ramps what the one before still corrected and corrects again only what is
+  // deep (kRampOnlyClearM): the corrections a final solve applied came on at once (OLD at 60 fps:
+  // a -0.3 rad swivel fix at one frame against the ramped +1.5, the elbow 8 cm out and back,
+  // 149 m/s^2; TELL at 25 fps: the sign's first frame without the fix its neighbour had, 15 cm).
+  // Measured over the lexicon from the key pose, 141 signs x 9 settings x 2 rigs, wrists and
+  // elbows over 3 m/s or 50 m/s^2: 20 sign-settings with the 2 rounds as before, 18 with this
+  // third (a third round correcting at 2 mm like the others: also 18, but HOSPITAL's small
+  // last fixes came on at once, 34 -> 14 m/s^2 with the net; a fourth round: 19).
+  constexpr int kRampRounds = 3;
   for (int round = 0; round < kRampRounds; ++round) {
   bool any_turn = false, any_swivel = false;
   for (const auto& ft : turns)
@@ -1682,7 +1709,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         if (rotation_angle(ramped[f]) > 0.0f) redo[f] = 1;
       }
     }
+    ramp_only = round + 1 == kRampRounds;
     solve_frames(&redo);
+    ramp_only = false;
   }
   if (!(any_turn || any_swivel || any_push)) break;
   // Frames the round did not solve again had no correction; the ones it did now hold only the
