@@ -39,6 +39,9 @@ glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const Mir
 // nods, swings and circles the step's time (a constant rate; their amplitude is eased in and out
 // over the first and last quarter), twists the minimum-jerk path parameter.
 glm::quat wrist_motion(const Rig& rig, Side side, const notation::Movement& m, float s);
+// The wrist motions' amplitude envelope at s: 0 at both ends, 1 from the first quarter to the
+// last, a smoothstep between (zero slope at both ends).
+float wrist_motion_envelope(float s);
 
 // Finger play: the fingers flex in a wave, index to little.
 HandAngles finger_play(const HandAngles& base, float s);

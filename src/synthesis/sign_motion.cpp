@@ -99,6 +99,9 @@ struct HandState {
   HandAngles angles;
   glm::vec3 offset{0.0f};
   float swivel = 0.4f;
+  // How far the wrist's clamped angles are refitted to the request (ArmTarget::wrist_limit_fit):
+  // a wrist movement's amplitude envelope; 0 elsewhere.
+  float wrist_limit_fit = 0.0f;
 };
 
 // A movement's hand turn, seed 004's orientation change within a gesture (eq. (7)'s S_beg ->
@@ -1210,17 +1213,22 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             // where that part goes) swung the wrist around the palm (Й's twist: the wrist's
             // per-frame step changed by 73 mm from one frame to the next).
             //
-            // Nods, swings and circles cycle at a constant rate (wrist_motion's phase is the
-            // step's time): on the minimum-jerk path parameter the middle cycle ran 1.9 times
-            // faster than the others and WALK's flapping fingertips changed their step by 72 mm.
-            // A twist keeps the path parameter: it drives the forearm's rotation into its limit
-            // (Й: E(u), P(o)), where the clamped wrist angles change branch; at a constant rate
-            // the change stays under the flip threshold (kWristFlipRadPerS) and passes
-            // unfiltered (Й's ring tip 46 -> 81 mm change of step), while the warped middle is
-            // caught as a flip and turned through at kWristTurnRadPerS.
+            // Wrist motions cycle at a constant rate (wrist_motion's phase is the step's time):
+            // on the minimum-jerk path parameter the middle cycle ran 1.9 times faster than the
+            // others and WALK's flapping fingertips changed their step by 72 mm. Twists too: one
+            // drives the forearm's rotation into its limit (Й: E(u), P(o), the hand already at
+            // the forearm's, the ulnar and the extension limit), where the clamped wrist angles
+            // jumped; timed at a constant rate that passed under the flip threshold
+            // (kWristFlipRadPerS: Й's ring tip 46 -> 81 mm change of step), so twists had kept
+            // the warped timing whose fast middle the flip rule caught. The frames of a wrist
+            // motion now refit the clamped angles (wrist_limit_fit, eased in and out with the
+            // amplitude so the motion starts and ends on the key pose's wrist): Й 46 -> 19 mm.
             const float time_s = static_cast<float>(f) / n;
-            const float phase = m.kind == MovementKind::WristTwist ? ps : seg.reversed ? 1.0f - time_s : time_s;
+            const float phase = seg.reversed ? 1.0f - time_s : time_s;
             const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, phase);
+            if (m.kind == MovementKind::WristNod || m.kind == MovementKind::WristSwing ||
+                m.kind == MovementKind::WristTwist || m.kind == MovementKind::WristCircle)
+              h.wrist_limit_fit = std::max(h.wrist_limit_fit, wrist_motion_envelope(phase));
             h.target += turned * h.offset - h.delta * h.offset;
             h.delta = turned;
             if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
@@ -1413,6 +1421,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         t.hand_delta = h.delta;
         t.auto_swivel = false;
         t.swivel_rad = h.swivel;
+        t.wrist_limit_fit = h.wrist_limit_fit;
         t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
         t.hand_contact = plan.exempt_trunk;
         bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
