@@ -215,14 +215,12 @@ void fit_clamped_wrist(const WristFrame& w, const glm::quat& rel, float* twist, 
   *radial = dev * w.radial_sign;
 }
 
-// R_rel = lower^-1 * hand decomposed as twist(e1) * deviation(e2) * flexion(e3), each clamped
-// (towards the previous frame's angles when there is one, see clamp_limited), and, weighted by
-// `fit` (ArmTarget::wrist_limit_fit), refitted where a limit holds (fit_clamped_wrist).
-void solve_wrist(const WristFrame& w, const glm::quat& lower0, const glm::quat& hand_delta,
-                 const ArmPose* previous, float max_step, float fit, float* twist, float* radial, float* flex) {
+// R_rel decomposed as twist(e1) * deviation(e2) * flexion(e3), each clamped (towards the
+// previous frame's angles when there is one, see clamp_limited). True when a limit held.
+bool clamped_euler(const WristFrame& w, const glm::quat& rel, const ArmPose* previous, float* twist, float* radial,
+                   float* flex) {
   const ArmLimits& lim = arm_limits();
   glm::mat3 basis(w.e1, w.e2, w.e3);
-  glm::quat rel = glm::conjugate(lower0) * hand_delta;
   glm::mat3 m = glm::transpose(basis) * glm::mat3_cast(rel) * basis;
   auto R = [&](int r, int c) { return m[c][r]; };
   float tw = std::atan2(-R(1, 2), R(2, 2));
@@ -231,14 +229,25 @@ void solve_wrist(const WristFrame& w, const glm::quat& lower0, const glm::quat& 
   *twist = clamp_limited(tw, lim.twist_lo, lim.twist_hi, previous ? &previous->twist_rad : nullptr);
   *radial = clampf(dev * w.radial_sign, -lim.ulnar_dev, lim.radial_dev);
   *flex = clamp_limited(fl, -lim.wrist_ext, lim.wrist_flex, previous ? &previous->wrist_flex_rad : nullptr);
-  if (fit > 0.0f && (*twist != tw || *radial != dev * w.radial_sign || *flex != fl)) {
-    float ft = *twist, fr = *radial, ff = *flex;
-    fit_clamped_wrist(w, rel, &ft, &fr, &ff);
-    // Blended in by the caller's weight (the limits are a box: the blend stays within them).
-    *twist += fit * (ft - *twist);
-    *radial += fit * (fr - *radial);
-    *flex += fit * (ff - *flex);
+  return *twist != tw || *radial != dev * w.radial_sign || *flex != fl;
+}
+
+// R_rel = lower^-1 * hand decomposed as clamped_euler does. With a wrist motion (a nod, swing,
+// twist or circle: `motion`, the part of hand_delta right-multiplied onto the held orientation,
+// ArmTarget::wrist_motion) the motion turns the hand as the limits realise the held orientation
+// (its clamped angles, the key pose's wrist) and, where the turned hand is beyond a limit, the
+// angles are refitted to it (fit_clamped_wrist). So the motion starts and ends on the key pose's
+// wrist, and near a limit the hand stops on it instead of jumping (Й's twist).
+void solve_wrist(const WristFrame& w, const glm::quat& lower0, const glm::quat& hand_delta, const glm::quat& motion,
+                 const ArmPose* previous, float max_step, float* twist, float* radial, float* flex) {
+  glm::quat rel = glm::conjugate(lower0) * hand_delta;
+  const bool moving = motion != glm::quat(1, 0, 0, 0);
+  if (moving) {
+    float t0, r0, f0;
+    clamped_euler(w, rel * glm::conjugate(motion), previous, &t0, &r0, &f0);
+    rel = axis_angle(w.e1, t0) * axis_angle(w.e2, r0 * w.radial_sign) * axis_angle(w.e3, f0) * motion;
   }
+  if (clamped_euler(w, rel, previous, twist, radial, flex) && moving) fit_clamped_wrist(w, rel, twist, radial, flex);
   if (!previous) return;
   // On a path the wrist turns at a human speed: each angle moves at most max_step from the
   // previous frame's. Where the request is out of reach, the clamped angles can still change
@@ -297,7 +306,7 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
   float tw = 0, rd = 0, fl = 0;
   for (int iter = 0; iter < kOrientationRounds; ++iter) {
     Chain c = solve_chain(rig, side, wrist_target, swivel);
-    solve_wrist(w, c.lower0, t.hand_delta, t.previous, t.max_wrist_step_rad, t.wrist_limit_fit, &tw, &rd, &fl);
+    solve_wrist(w, c.lower0, t.hand_delta, t.wrist_motion, t.previous, t.max_wrist_step_rad, &tw, &rd, &fl);
     ArmPose p = consider(c, tw, rd, fl);
     glm::vec3 next = t.point - carried(p);
     float step = glm::length(next - wrist_target);

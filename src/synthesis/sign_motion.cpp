@@ -99,9 +99,9 @@ struct HandState {
   HandAngles angles;
   glm::vec3 offset{0.0f};
   float swivel = 0.4f;
-  // How far the wrist's clamped angles are refitted to the request (ArmTarget::wrist_limit_fit):
-  // a wrist movement's amplitude envelope; 0 elsewhere.
-  float wrist_limit_fit = 0.0f;
+  // The wrist movement's part of delta, right-multiplied onto the held orientation
+  // (ArmTarget::wrist_motion; identity: none).
+  glm::quat wrist_turn{1, 0, 0, 0};
 };
 
 // A movement's hand turn, seed 004's orientation change within a gesture (eq. (7)'s S_beg ->
@@ -1221,14 +1221,13 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             // jumped; timed at a constant rate that passed under the flip threshold
             // (kWristFlipRadPerS: Й's ring tip 46 -> 81 mm change of step), so twists had kept
             // the warped timing whose fast middle the flip rule caught. The frames of a wrist
-            // motion now refit the clamped angles (wrist_limit_fit, eased in and out with the
-            // amplitude so the motion starts and ends on the key pose's wrist): Й 46 -> 19 mm.
+            // motion now turn the hand as the key pose's wrist realises it and refit the
+            // clamped angles beyond a limit (ArmTarget::wrist_motion).
             const float time_s = static_cast<float>(f) / n;
             const float phase = seg.reversed ? 1.0f - time_s : time_s;
-            const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, phase);
-            if (m.kind == MovementKind::WristNod || m.kind == MovementKind::WristSwing ||
-                m.kind == MovementKind::WristTwist || m.kind == MovementKind::WristCircle)
-              h.wrist_limit_fit = std::max(h.wrist_limit_fit, wrist_motion_envelope(phase));
+            const glm::quat motion = wrist_motion(rig, plans[i].side, m, phase);
+            const glm::quat turned = h.delta * motion;
+            h.wrist_turn = h.wrist_turn * motion;
             h.target += turned * h.offset - h.delta * h.offset;
             h.delta = turned;
             if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
@@ -1421,7 +1420,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         t.hand_delta = h.delta;
         t.auto_swivel = false;
         t.swivel_rad = h.swivel;
-        t.wrist_limit_fit = h.wrist_limit_fit;
+        t.wrist_motion = h.wrist_turn;
         t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
         t.hand_contact = plan.exempt_trunk;
         bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
