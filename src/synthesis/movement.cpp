@@ -23,6 +23,13 @@ glm::vec3 perpendicular(const Rig& rig, const glm::vec3& d) {
 
 int mirror_parity(const MirrorAxes& m) { return (m.x ? 1 : 0) + (m.y ? 1 : 0) + (m.z ? 1 : 0); }
 
+// The wrist motions' amplitude envelope at s: 0 at both ends, 1 from the first quarter to the
+// last, a smoothstep between (zero slope at both ends).
+float wrist_motion_envelope(float s) {
+  const float edge = std::min(s, 1.0f - s) / 0.25f;
+  return edge >= 1.0f ? 1.0f : edge <= 0.0f ? 0.0f : edge * edge * (3.0f - 2.0f * edge);
+}
+
 float triangle_wave(float x) {  // period 1, range [-1, 1], 0 at x = 0
   float f = x - std::floor(x);
   return f < 0.25f ? 4.0f * f : f < 0.75f ? 2.0f - 4.0f * f : 4.0f * f - 4.0f;
@@ -126,11 +133,6 @@ glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const Mir
     }
     default: (void)reference; return glm::vec3(0.0f);
   }
-}
-
-float wrist_motion_envelope(float s) {
-  const float edge = std::min(s, 1.0f - s) / 0.25f;
-  return edge >= 1.0f ? 1.0f : edge <= 0.0f ? 0.0f : edge * edge * (3.0f - 2.0f * edge);
 }
 
 glm::quat wrist_motion(const Rig& rig, Side side, const notation::Movement& m, float s) {
