@@ -45,6 +45,14 @@ struct ArmTarget {
   // max_wrist_step_rad from the previous frame's (0: they hold).
   const ArmPose* previous = nullptr;
   float max_wrist_step_rad = 0.0f;
+  // The part of hand_delta that is a wrist movement (nod, swing, twist, circle), right-multiplied
+  // onto the held orientation (identity: none). The movement then turns the hand as the wrist
+  // limits realise the held orientation (the key pose's wrist), and where that takes a wrist
+  // angle beyond its limit the other angles are refitted to the request instead of keeping the
+  // Euler angles that went with the unclamped one (arm_ik.cpp fit_clamped_wrist). Before, a twist
+  // driven into the limits (Й, its hand already at the forearm's, the ulnar and the extension
+  // limit) saw the clamped wrist's orientation error jump 0.04 -> 0.47 rad in one frame.
+  glm::quat wrist_motion{1, 0, 0, 0};
   // Swivel continuity (auto_swivel only): the swivel this arm has at a neighbouring pose of the
   // same motion (the sign's key pose before this one). Without it, two poses a few centimetres
   // apart could choose swivels a radian apart at near-equal cost and the elbow swing between them

@@ -23,6 +23,13 @@ glm::vec3 perpendicular(const Rig& rig, const glm::vec3& d) {
 
 int mirror_parity(const MirrorAxes& m) { return (m.x ? 1 : 0) + (m.y ? 1 : 0) + (m.z ? 1 : 0); }
 
+// The wrist motions' amplitude envelope at s: 0 at both ends, 1 from the first quarter to the
+// last, a smoothstep between (zero slope at both ends).
+float wrist_motion_envelope(float s) {
+  const float edge = std::min(s, 1.0f - s) / 0.25f;
+  return edge >= 1.0f ? 1.0f : edge <= 0.0f ? 0.0f : edge * edge * (3.0f - 2.0f * edge);
+}
+
 float triangle_wave(float x) {  // period 1, range [-1, 1], 0 at x = 0
   float f = x - std::floor(x);
   return f < 0.25f ? 4.0f * f : f < 0.75f ? 2.0f - 4.0f * f : 4.0f * f - 4.0f;
@@ -134,17 +141,15 @@ glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const Mir
 
 glm::quat wrist_motion(const Rig& rig, Side side, const notation::Movement& m, float s) {
   const ArmRig& a = rig.arms[side];
-  // Two cycles of s. Nods, swings and circles are given the step's time (sign_motion.cpp): warped
-  // by the minimum-jerk law, the middle cycle ran 1.9 times faster than the first and last, and
-  // at 30 fps WALK's flapping fingertips moved 30, 68, 30 mm in three frames. Their amplitude
-  // eases in over the first quarter and out over the last (a smoothstep, zero slope at both
-  // ends), so the wrist starts and stops at rest: velocity continuous where the movement meets a
-  // hold. A twist, given the minimum-jerk parameter, starts and stops at rest already.
-  const float edge = std::min(s, 1.0f - s) / 0.25f;
-  const float ease = m.kind == MovementKind::WristTwist || edge >= 1.0f ? 1.0f
-                     : edge <= 0.0f                                     ? 0.0f
-                                                                        : edge * edge * (3.0f - 2.0f * edge);
-  float k = size_factor(m.size) * ease;
+  // Two cycles of s. Every wrist motion is given the step's time (sign_motion.cpp): warped by the
+  // minimum-jerk law, the middle cycle ran 1.9 times faster than the first and last, and at 30
+  // fps WALK's flapping fingertips moved 30, 68, 30 mm in three frames. The amplitude eases in
+  // over the first quarter and out over the last (a smoothstep, zero slope at both ends), so the
+  // wrist starts and stops at rest: velocity continuous where the movement meets a hold. Twists
+  // too, since the wrist's limits are refitted during wrist motions (arm_ik.h
+  // ArmTarget::wrist_limit_fit): on the minimum-jerk parameter they had been kept because their
+  // fast middle let the flip rule hide the clamped wrist's jumps.
+  float k = size_factor(m.size) * wrist_motion_envelope(s);
   glm::vec3 flex_axis = glm::normalize(glm::cross(a.finger_dir, a.palm_normal));
   float w = std::sin(kTwoPi * 2.0f * s);
   switch (m.kind) {

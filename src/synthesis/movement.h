@@ -42,8 +42,8 @@ glm::vec3 movement_offset(const Rig& rig, const notation::Movement& m, const Mir
 
 // Wrist motions (nod, swing, twist, circle): rotation in the hand's bind frame, right-multiplied
 // onto the hand delta. Identity for other kinds. `s` in [0, 1]: two cycles. sign_motion gives
-// nods, swings and circles the step's time (a constant rate; their amplitude is eased in and out
-// over the first and last quarter), twists the minimum-jerk path parameter.
+// every wrist motion the step's time (a constant rate; the amplitude is eased in and out over the
+// first and last quarter) and passes the rotation to the arm IK as ArmTarget::wrist_motion.
 glm::quat wrist_motion(const Rig& rig, Side side, const notation::Movement& m, float s);
 
 // Finger play: the fingers flex in a wave, index to little.

@@ -100,6 +100,9 @@ struct HandState {
   HandAngles angles;
   glm::vec3 offset{0.0f};
   float swivel = 0.4f;
+  // The wrist movement's part of delta, right-multiplied onto the held orientation
+  // (ArmTarget::wrist_motion; identity: none).
+  glm::quat wrist_turn{1, 0, 0, 0};
 };
 
 // A movement's hand turn, seed 004's orientation change within a gesture (eq. (7)'s S_beg ->
@@ -1313,17 +1316,21 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
             // where that part goes) swung the wrist around the palm (Й's twist: the wrist's
             // per-frame step changed by 73 mm from one frame to the next).
             //
-            // Nods, swings and circles cycle at a constant rate (wrist_motion's phase is the
-            // step's time): on the minimum-jerk path parameter the middle cycle ran 1.9 times
-            // faster than the others and WALK's flapping fingertips changed their step by 72 mm.
-            // A twist keeps the path parameter: it drives the forearm's rotation into its limit
-            // (Й: E(u), P(o)), where the clamped wrist angles change branch; at a constant rate
-            // the change stays under the flip threshold (kWristFlipRadPerS) and passes
-            // unfiltered (Й's ring tip 46 -> 81 mm change of step), while the warped middle is
-            // caught as a flip and turned through at kWristTurnRadPerS.
+            // Wrist motions cycle at a constant rate (wrist_motion's phase is the step's time):
+            // on the minimum-jerk path parameter the middle cycle ran 1.9 times faster than the
+            // others and WALK's flapping fingertips changed their step by 72 mm. Twists too: one
+            // drives the forearm's rotation into its limit (Й: E(u), P(o), the hand already at
+            // the forearm's, the ulnar and the extension limit), where the clamped wrist angles
+            // jumped; timed at a constant rate that passed under the flip threshold
+            // (kWristFlipRadPerS: Й's ring tip 46 -> 81 mm change of step), so twists had kept
+            // the warped timing whose fast middle the flip rule caught. The frames of a wrist
+            // motion now turn the hand as the key pose's wrist realises it and refit the
+            // clamped angles beyond a limit (ArmTarget::wrist_motion).
             const float time_s = static_cast<float>(f) / n;
-            const float phase = m.kind == MovementKind::WristTwist ? ps : seg.reversed ? 1.0f - time_s : time_s;
-            const glm::quat turned = h.delta * wrist_motion(rig, plans[i].side, m, phase);
+            const float phase = seg.reversed ? 1.0f - time_s : time_s;
+            const glm::quat motion = wrist_motion(rig, plans[i].side, m, phase);
+            const glm::quat turned = h.delta * motion;
+            h.wrist_turn = h.wrist_turn * motion;
             h.target += turned * h.offset - h.delta * h.offset;
             h.delta = turned;
             if (m.kind == MovementKind::FingerPlay) h.angles = finger_play(h.angles, ps);
@@ -1537,6 +1544,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         t.hand_delta = h.delta;
         t.auto_swivel = false;
         t.swivel_rad = h.swivel;
+        t.wrist_motion = h.wrist_turn;
         t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
         t.hand_contact = plan.exempt_trunk;
         bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;

@@ -206,5 +206,61 @@ TEST(SynthesisArmIk, ATouchTooCloseForTheFoldedArmTiltsTheHandToReach) {
   EXPECT_EQ(mouth.hand_delta, mouth_written);
 }
 
+// A wrist movement driven past the limits (ArmTarget::wrist_motion): Й's twist, fingers up and
+// the palm out in front of the right shoulder, turned in 0.02 rad steps about the fingers until
+// the request is 0.85 rad beyond the limits. The hand stops on them smoothly: its orientation
+// error and wrist angles change no faster than the request turns (measured 0.020 / 0.022 rad a
+// step, reference; 0.020 / 0.022 variant). Solved as before (the clamped Euler angles of the
+// turned request), the error moved 3.1 / 2.4 times as fast as the request (0.063 / 0.047 rad a
+// step): at a signing frame rate, Й's wrist jumped between frames.
+TEST(SynthesisArmIk, AWristTwistPastTheLimitsStopsOnThemOnTwoRigs) {
+  for (int variant = 0; variant < 2; ++variant) {
+    avatar::Avatar av = variant == 0 ? make_reference_humanoid() : testing::make_rotated_variant(1.1f);
+    Rig rig;
+    std::string error;
+    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+    const ArmRig& a = rig.arms[kRight];
+    notation::Orientation o;
+    o.extended_finger = {0, 1, 0};
+    o.palm = {0, 0, 1};
+    const glm::quat base = hand_delta_for(rig, kRight, orientation_frame(rig, o, kRight, false));
+    ArmTarget t;
+    t.point = rig.bind_pos[a.upper] + 0.3f * (a.upper_len_m + a.lower_len_m) * rig.forward - 0.1f * rig.up;
+    t.contact_offset = 0.08f * a.finger_dir;
+    t.auto_swivel = false;
+    t.swivel_rad = 0.2f;
+    t.hand_delta = base;
+    const ArmPose key = solve_arm(rig, kRight, t);
+    const float step_rad = 0.02f;
+    float worst[2] = {0.0f, 0.0f}, worst_error[2] = {0.0f, 0.0f}, most_error = 0.0f;
+    ArmPose prev[2] = {key, key};
+    for (int k = 1; k <= 60; ++k) {
+      const glm::quat motion = axis_angle(a.finger_dir, -step_rad * static_cast<float>(k));
+      for (int with = 0; with < 2; ++with) {
+        ArmTarget turned = t;
+        turned.hand_delta = base * motion;
+        if (with) turned.wrist_motion = motion;
+        const ArmPose p = solve_arm(rig, kRight, turned);
+        worst[with] = std::max(worst[with], wrist_change(p, prev[with]));
+        worst_error[with] = std::max(worst_error[with], std::fabs(p.orientation_error_rad - prev[with].orientation_error_rad));
+        if (with) most_error = std::max(most_error, p.orientation_error_rad);
+        prev[with] = p;
+      }
+    }
+    SCOPED_TRACE(variant == 0 ? "reference humanoid" : "re-rigged variant");
+    // The key pose is on a limit and the twist takes the request well beyond it (else the test
+    // would test nothing).
+    EXPECT_GT(most_error, key.orientation_error_rad + 0.4f);
+    EXPECT_LE(worst[1], 1.25f * step_rad);
+    EXPECT_LE(worst_error[1], step_rad + 0.001f);
+    // Without the motion given, the clamped Euler angles' error moved 3.1 (reference) / 2.4
+    // (variant) times as fast as the request, the wrist angles with it.
+    EXPECT_GT(std::max(worst[0], worst_error[0]), 2.0f * step_rad);
+    RecordProperty(variant == 0 ? "reference" : "variant",
+                   std::to_string(worst[0]) + "/" + std::to_string(worst_error[0]) + " -> " +
+                       std::to_string(worst[1]) + "/" + std::to_string(worst_error[1]));
+  }
+}
+
 }  // namespace
 }  // namespace sw::synthesis
