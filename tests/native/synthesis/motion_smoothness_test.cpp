@@ -410,8 +410,9 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed) {
   //   (sign_motion.cpp, kRampOnlyClearM). Which frame that is depends on the sampling: OLD at
   //   60 fps only (2.7 m/s, 153 m/s^2 at 0.43 of 0.53 s), GOOD at 25 fps x 1 and 30 fps x 1.25,
   //   THANK-YOU at 60 fps (its wrist, 93 m/s^2).
-  // - KEY (both rigs, 60 fps): the wrist twist turns round with a kink (movement.cpp's twist
-  //   timing); 30 fps samples it as 46 m/s^2, 60 fps as up to 68.
+  // KEY (both rigs, 60 fps: the wrist twist turned round with a kink, 66-69 m/s^2) is within the
+  // bounds (22 m/s^2) since twists are refitted at the wrist's limits and timed at a constant
+  // rate (arm_ik.cpp fit_clamped_wrist, movement.cpp); 15 sign-settings over now.
   // - TEACHER (reference; 0.8 and 60 fps, the left elbow in the sign's last movement, up to
   //   78 m/s^2; 35 at 30 fps x 1): the elbow speeds up over the movement's last 0.1 s while
   //   the wrist slows, and stops within a frame: the wrist turns through a flip there (6 rad/s
@@ -420,10 +421,10 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed) {
   //   speed 1, and the speed factor scales every duration, so accelerations by its square
   //   (x 1.56): a faster signer, not a sampling artefact.
   const std::map<std::string, Limit> known = {
-      {"avatar KEY", {kMaxSpeedMPerS, 69.0f}},         {"avatar UNDERSTAND", {kMaxSpeedMPerS, 51.0f}},
+      {"avatar UNDERSTAND", {kMaxSpeedMPerS, 51.0f}},
       {"reference THANK-YOU", {3.1f, 94.0f}},          {"reference TEACHER", {kMaxSpeedMPerS, 78.0f}},
       {"reference UNDERSTAND", {kMaxSpeedMPerS, 54.0f}}, {"reference GOOD", {3.3f, 123.0f}},
-      {"reference OLD", {kMaxSpeedMPerS, 153.0f}},     {"reference KEY", {kMaxSpeedMPerS, 66.0f}},
+      {"reference OLD", {kMaxSpeedMPerS, 153.0f}},
   };
   int over = 0, settings = 0;
   PhysicalWorst worst;
