@@ -1180,6 +1180,18 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         for (int i = 0; i < 2; ++i) {
           if (!plans[i].active || seg.step >= static_cast<int>(plans[i].steps.size())) continue;
           ms[i] = plans[i].steps[seg.step];
+          // A path in the same step (THANK-YOU: Par(M(straight, do), M(replace, E(o), P(u))))
+          // takes the hand away from its place while it changes orientation or shape: like a
+          // hand an earlier step relocated (below), it turns about its wrist, not about the
+          // written contact part. Turned about the fingertips at the chin, fingers forward put
+          // the goal's wrist 18 cm behind the chin, in the neck (the reference humanoid's
+          // forearm 86 mm in the torso along the path, cleared frame by frame by swivel fixes
+          // of up to 1.5 rad that never settled: 3.1 m/s, 93 m/s^2 at 60 fps).
+          // (Not a contact part on the arm: DAY's elbow stays on the other hand while the
+          // forearm turns about it, wrist_led above.)
+          const bool leaves_place = !wrist_led[i] && std::any_of(ms[i].begin(), ms[i].end(), [](const notation::Movement& mv) {
+            return mv.kind == MovementKind::Straight || mv.kind == MovementKind::Arc;
+          });
           for (const auto& m : ms[i]) {
             duration = std::max(duration, movement_duration_s(m));
             hold = std::max(hold, movement_hold_s(m));
@@ -1227,7 +1239,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
                                              plans[i].place_finger, plans[i].place_distance_m);
               }
               if (!m.to_location) g.target = goal[i].target;
-              if (!m.to_location && relocated[i]) {
+              if (!m.to_location && (relocated[i] || leaves_place)) {
                 // A hand that an earlier step moved away from its written place keeps its
                 // wrist where it is while it changes shape or orientation: the written contact
                 // part belongs to the written place. Turning about that fingertip at the

@@ -404,7 +404,7 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed) {
   //   (x 1.56): a faster signer, not a sampling artefact.
   const std::map<std::string, Limit> known = {
       {"avatar KEY", {kMaxSpeedMPerS, 69.0f}},         {"avatar UNDERSTAND", {kMaxSpeedMPerS, 51.0f}},
-      {"reference THANK-YOU", {3.1f, 94.0f}},          {"reference TEACHER", {kMaxSpeedMPerS, 78.0f}},
+      {"reference TEACHER", {kMaxSpeedMPerS, 78.0f}},
       {"reference UNDERSTAND", {kMaxSpeedMPerS, 54.0f}}, {"reference GOOD", {3.3f, 123.0f}},
       {"reference OLD", {kMaxSpeedMPerS, 153.0f}},     {"reference KEY", {kMaxSpeedMPerS, 66.0f}},
   };
@@ -444,6 +444,43 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed) {
   RecordProperty("sign_settings_over_human_bounds", std::to_string(over) + "/" + std::to_string(settings));
   RecordProperty("worst_speed_m_per_s", std::to_string(worst.speed) + " " + worst.speed_what);
   RecordProperty("worst_accel_m_per_s2", std::to_string(worst.accel) + " " + worst.accel_what);
+}
+
+// A hand that leaves its touch while it turns (THANK-YOU: the fingertips at the chin, fingers up,
+// then out and down, turning to fingers forward, palm up) travels the path with its wrist: the
+// written contact part belongs to the place it leaves. Turned about the fingertips, fingers
+// forward put the goal's wrist 18 cm behind the chin (in the neck) and the wrist went back
+// along the path instead of out; the reference humanoid's forearm lay 86 mm in the torso and
+// the frames' swivel fixes (up to 1.5 rad) moved the wrist at 3.1 m/s, 93 m/s^2 (60 fps).
+TEST_P(MotionSmoothness, AHandLeavingATouchWhileItTurnsCarriesItsWristAlongThePath) {
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  const PhraseText t = phrase_from_text(
+      "R(H(flat), E(u), P(i), Loc(chin, centre, touch), C(tip, 2), Par(M(straight, do), M(replace, E(o), P(u))))", {});
+  ASSERT_TRUE(t.ok());
+  for (float fps : {25.0f, 30.0f, 60.0f}) {
+    SynthesisOptions o = from_key_pose();
+    o.fps = fps;
+    SynthesisResult r = synth.phrase(t.items, o);
+    ASSERT_TRUE(r.ok());
+    PoseBuilder pb(rig_);
+    const int J = rig_.joint_count;
+    pb.set_from_local(&r.clip.rotations[0]);
+    const glm::vec3 start = pb.position(rig_.arms[kRight].hand);
+    float least_forward = 0.0f;
+    glm::vec3 wrist = start;
+    for (int f = 0; f < r.clip.frame_count; ++f) {
+      pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * J]);
+      wrist = pb.position(rig_.arms[kRight].hand);
+      least_forward = std::min(least_forward, glm::dot(wrist - start, rig_.forward));
+    }
+    // Out and down: the wrist ends in front of where it started and never goes back towards the body.
+    EXPECT_GT(glm::dot(wrist - start, rig_.forward), 0.03f) << fps << " fps";
+    EXPECT_GT(least_forward, -0.01f) << fps << " fps";
+    const PhysicalWorst w = measure_physical(rig_, r.clip);
+    EXPECT_LE(w.speed, kMaxSpeedMPerS) << fps << " fps: " << w.speed_what;
+    EXPECT_LE(w.accel, kMaxAccelMPerS2) << fps << " fps: " << w.accel_what;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Rigs, MotionSmoothness, ::testing::Values("avatar", "reference"));
