@@ -387,12 +387,13 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed) {
   // Before the ramps spanned a fixed time (frame_corrections' ramps counted 8 frames) and the
   // last ramp round stopped adding one-frame fixes, 24 of the 2,538 sign-settings were over,
   // worst THANK-YOU 4.3 m/s and 144 m/s^2 (reference, 60 fps x 1.25); now 20.
-  // - Chin signs on the reference humanoid (THANK-YOU, GOOD, OLD): the forearm lies in the torso
-  //   while the hand is at the chin and the swivel fixes that clear it (up to 1.5 rad) do not
-  //   settle in the ramp rounds; a frame still over 4 mm deep after them is cleared at once
+  // - Chin signs on the reference humanoid (GOOD, OLD): the forearm lies in the torso while the
+  //   hand is at the chin and the swivel fixes that clear it (up to 1.5 rad) do not settle in
+  //   the ramp rounds; a frame still over 4 mm deep after them is cleared at once
   //   (sign_motion.cpp, kRampOnlyClearM). Which frame that is depends on the sampling: OLD at
-  //   60 fps only (2.7 m/s, 153 m/s^2 at 0.43 of 0.53 s), GOOD at 25 fps x 1 and 30 fps x 1.25,
-  //   THANK-YOU at 60 fps (its wrist, 93 m/s^2).
+  //   60 fps only (2.7 m/s, 153 m/s^2 at 0.43 of 0.53 s), GOOD at 25 fps x 1 and 30 fps x 1.25.
+  //   THANK-YOU (3.1 m/s, 94 m/s^2) is off the list: its hand turned about the fingertips at the
+  //   chin, the wrist into the neck (AHandLeavingATouchWhileItTurnsCarriesItsWristAlongThePath).
   // - KEY (both rigs, 60 fps): the wrist twist turns round with a kink (movement.cpp's twist
   //   timing); 30 fps samples it as 46 m/s^2, 60 fps as up to 68.
   // - TEACHER (reference; 0.8 and 60 fps, the left elbow in the sign's last movement, up to
