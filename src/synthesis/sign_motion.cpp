@@ -1165,6 +1165,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     for (const Segment& seg : segments) {
       std::array<HandState, 2> from = state, goal = state;
       std::array<bool, 2> other_way = {false, false};  // the hand turns the other way round
+      std::array<bool, 2> wrist_path = {false, false};  // the wrist, not the contact part, travels
       std::array<std::vector<Movement>, 2> ms;
       float duration = 0.3f, hold = 0.0f;
       if (seg.back_to_start) {
@@ -1183,6 +1184,31 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         for (int i = 0; i < 2; ++i) {
           if (!plans[i].active || seg.step >= static_cast<int>(plans[i].steps.size())) continue;
           ms[i] = plans[i].steps[seg.step];
+          // A path in the same step (THANK-YOU: Par(M(straight, do), M(replace, E(o), P(u))))
+          // takes the hand away from its place while it changes orientation or shape: like a
+          // hand an earlier step relocated (below), it turns about its wrist, not about the
+          // written contact part. Turned about the fingertips at the chin, fingers forward put
+          // the goal's wrist 18 cm behind the chin, in the neck (the reference humanoid's
+          // forearm 86 mm in the torso along the path, cleared frame by frame by swivel fixes
+          // of up to 1.5 rad that never settled: 3.1 m/s, 93 m/s^2 at 60 fps).
+          // (Not a contact part on the arm: DAY's elbow stays on the other hand while the
+          // forearm turns about it, wrist_led above.)
+          const bool leaves_place = !wrist_led[i] && std::any_of(ms[i].begin(), ms[i].end(), [](const notation::Movement& mv) {
+            return mv.kind == MovementKind::Straight || mv.kind == MovementKind::Arc;
+          });
+          const bool to_place = std::any_of(ms[i].begin(), ms[i].end(), [](const notation::Movement& mv) {
+            return mv.kind == MovementKind::Target && mv.to_location.has_value();
+          });
+          const bool turns = std::any_of(ms[i].begin(), ms[i].end(), [](const notation::Movement& mv) {
+            return mv.to_orientation.has_value();
+          });
+          // A hand that travels to a new place while it turns (GOOD: the fingertips from the
+          // chin to the left palm, turning from fingers up, palm in, to fingers forward, palm
+          // up) moves its wrist along the path and turns about it. Its contact point's path
+          // with the turn about the fingertips swung the wrist back into the neck near the chin
+          // (the reference humanoid's elbow 3.25 m/s, 123 m/s^2 at 30 fps x 1.25, as the frames'
+          // swivel fixes chased the forearm out of the torso). Both ends are as before.
+          wrist_path[i] = !wrist_led[i] && to_place && turns;
           for (const auto& m : ms[i]) {
             duration = std::max(duration, movement_duration_s(m));
             hold = std::max(hold, movement_hold_s(m));
@@ -1230,7 +1256,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
                                              plans[i].place_finger, plans[i].place_distance_m);
               }
               if (!m.to_location) g.target = goal[i].target;
-              if (!m.to_location && relocated[i]) {
+              if (!m.to_location && (relocated[i] || leaves_place)) {
                 // A hand that an earlier step moved away from its written place keeps its
                 // wrist where it is while it changes shape or orientation: the written contact
                 // part belongs to the written place. Turning about that fingertip at the
@@ -1297,6 +1323,11 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
           HandState h = mix_state(from[i], goal[i], s);
           const glm::vec3 state_target = h.target;  // before the path's offsets
           if (other_way[i]) h.delta = slerp_other_way(from[i].delta, goal[i].delta, s);
+          if (wrist_path[i]) {
+            const glm::vec3 w0 = from[i].target - from[i].delta * from[i].offset;
+            const glm::vec3 w1 = goal[i].target - goal[i].delta * goal[i].offset;
+            h.target = w0 + s * (w1 - w0) + h.delta * h.offset;
+          }
           glm::vec3 reference = h.delta * rig.arms[plans[i].side].palm_normal;
           bool alt = i == 1 && plans[1].alternating;
           const glm::vec3 outward = relocated[i] ? glm::vec3(0.0f) : touch_outward[i];
