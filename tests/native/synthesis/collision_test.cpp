@@ -369,6 +369,27 @@ void crossing_arm_depths(const SynthContext& ctx, const SynthesisResult& r, Side
   }
 }
 
+// The far side's beside places the far-side tests sweep, from the forehead to below the waist.
+const BodyLevel kFarSideLevels[] = {BodyLevel::Forehead, BodyLevel::Ears,        BodyLevel::Mouth,
+                                   BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
+                                   BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
+                                   BodyLevel::Belly,    BodyLevel::Waist,       BodyLevel::BelowWaist};
+
+// The five hands they sweep there, palm towards the body: 0 flat, 1 fist, 2 pointing index (all
+// three with the fingers up); 3 fist across the body (fingers to the left); 4 index pointing
+// up-left (the earliest measurements' hands).
+constexpr int kFarSideHands = 5;
+
+// A one-handed sign: the dominant hand `hand` (above) beside the far side of the body at `level`.
+notation::SignSpec far_side_sign(int hand, BodyLevel level, Contact contact) {
+  const notation::HandShape shapes[kFarSideHands] = {flat(), fist(), index_point(), fist(), index_point()};
+  const Direction fingers[kFarSideHands] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+  notation::SignSpec s = sign_at(shapes[hand], level, Side::LeftBeside, contact);
+  s.dominant.orientation.extended_finger = fingers[hand];
+  s.dominant.orientation.palm = {0, 0, -1};
+  return s;
+}
+
 // The dominant hand beside the FAR side of the body (`left_beside` from the forehead to below the
 // waist; touch, close and no contact; a flat hand, fingers up, palm in): the arm reaches round
 // the front of the chest (the place held off in front, the shoulder girdle protracted) instead
@@ -399,10 +420,6 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
   // the key pose keeps the unturned one).
   if (project.present)
     rigs.push_back({"avatar", std::move(project.avatar), {{BodyLevel::BelowWaist, {5.0f, 13.0f, 13.0f}}}});
-  const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,      BodyLevel::Mouth,
-                              BodyLevel::Chin,     BodyLevel::Neck,      BodyLevel::Shoulders,
-                              BodyLevel::ShoulderTop, BodyLevel::Chest,  BodyLevel::Stomach,
-                              BodyLevel::Belly,    BodyLevel::Waist,     BodyLevel::BelowWaist};
   float worst_key = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
@@ -410,12 +427,9 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
     SynthContext ctx;
     std::string error;
     ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
-    for (BodyLevel level : levels)
+    for (BodyLevel level : kFarSideLevels)
       for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
-        notation::SignSpec s = sign_at(flat(), level, Side::LeftBeside, c);
-        s.dominant.orientation.extended_finger = {0, 1, 0};
-        s.dominant.orientation.palm = {0, 0, -1};
-        SynthesisResult r = synth.sign(s, SynthesisOptions{});
+        SynthesisResult r = synth.sign(far_side_sign(0, level, c), SynthesisOptions{});
         ASSERT_TRUE(r.ok()) << r.errors[0].message;
         const std::string where = rg.name + " level " + std::to_string(static_cast<int>(level)) +
                                   " contact " + std::to_string(static_cast<int>(c));
@@ -448,10 +462,7 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
     std::string error;
     ASSERT_TRUE(make_context(av, lh, &ctx, &error)) << error;
     for (Contact c : {Contact::Close, Contact::None}) {
-      notation::SignSpec s = sign_at(flat(), BodyLevel::Chest, Side::LeftBeside, c);
-      s.dominant.orientation.extended_finger = {0, 1, 0};
-      s.dominant.orientation.palm = {0, 0, -1};
-      SynthesisResult r = synthesize_sign(s, av, lh);
+      SynthesisResult r = synthesize_sign(far_side_sign(0, BodyLevel::Chest, c), av, lh);
       ASSERT_TRUE(r.ok()) << r.errors[0].message;
       float key = 0.0f, clip = 0.0f;
       crossing_arm_depths(ctx, r, kLeft, &key, &clip);
@@ -500,12 +511,6 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
   if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
-  const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,        BodyLevel::Mouth,
-                              BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
-                              BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
-                              BodyLevel::Belly,    BodyLevel::Waist,       BodyLevel::BelowWaist};
-  const notation::HandShape shapes[] = {flat(), fist(), index_point(), fist(), index_point()};
-  const Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
   float worst_added = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
@@ -513,13 +518,10 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
     SynthContext ctx;
     std::string error;
     ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
-    for (int shape = 0; shape < 5; ++shape)
-      for (BodyLevel level : levels)
+    for (int shape = 0; shape < kFarSideHands; ++shape)
+      for (BodyLevel level : kFarSideLevels)
         for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
-          notation::SignSpec s = sign_at(shapes[shape], level, Side::LeftBeside, c);
-          s.dominant.orientation.extended_finger = fingers[shape];
-          s.dominant.orientation.palm = {0, 0, -1};
-          SynthesisResult r = synth.sign(s, SynthesisOptions{});
+          SynthesisResult r = synth.sign(far_side_sign(shape, level, c), SynthesisOptions{});
           ASSERT_TRUE(r.ok()) << r.errors[0].message;
           float key = 0.0f, clip = 0.0f;
           crossing_arm_depths(ctx, r, kRight, &key, &clip);
@@ -553,12 +555,6 @@ TEST(SynthesisCollision, FarSideRestTransitionsBringTheHandAcrossInFront) {
   std::string rig_error;
   const NamedRigs rigs = reference_and_project_avatar(&rig_error);
   ASSERT_TRUE(rig_error.empty()) << rig_error;
-  const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,        BodyLevel::Mouth,
-                              BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
-                              BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
-                              BodyLevel::Belly,    BodyLevel::Waist,       BodyLevel::BelowWaist};
-  const notation::HandShape shapes[] = {flat(), fist(), index_point(), fist(), index_point()};
-  const Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
   // The lead's case as written in the page: the right fist touching beside the left hip.
   const PhraseText fist_at_hip = phrase_from_text("R(H(fist), E(l), P(i), Loc(below_waist, left_beside, touch))", {});
   ASSERT_TRUE(fist_at_hip.ok());
@@ -589,13 +585,10 @@ TEST(SynthesisCollision, FarSideRestTransitionsBringTheHandAcrossInFront) {
     };
     std::vector<double> durations_s;
     float worst_out_m = 0.0f;
-    for (int shape = 0; shape < 5; ++shape)
-      for (BodyLevel level : levels)
+    for (int shape = 0; shape < kFarSideHands; ++shape)
+      for (BodyLevel level : kFarSideLevels)
         for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
-          notation::SignSpec s = sign_at(shapes[shape], level, Side::LeftBeside, c);
-          s.dominant.orientation.extended_finger = fingers[shape];
-          s.dominant.orientation.palm = {0, 0, -1};
-          SynthesisResult r = synth.sign(s, SynthesisOptions{});
+          SynthesisResult r = synth.sign(far_side_sign(shape, level, c), SynthesisOptions{});
           ASSERT_TRUE(r.ok()) << r.errors[0].message;
           float out_m = 0.0f;
           measure(r, &out_m, &durations_s);
@@ -670,11 +663,6 @@ TEST(SynthesisCollision, FistsTouchingBesideTheFarSideAreHeldToTheirMeasuredDept
                      {BodyLevel::Chest, {8.5f, 5.0f}},
                      {BodyLevel::BelowWaist, {42.5f, 44.5f}}},
                     18.5f});
-  const BodyLevel levels[] = {BodyLevel::Forehead, BodyLevel::Ears,        BodyLevel::Mouth,
-                              BodyLevel::Chin,     BodyLevel::Neck,        BodyLevel::Shoulders,
-                              BodyLevel::ShoulderTop, BodyLevel::Chest,    BodyLevel::Stomach,
-                              BodyLevel::Belly,    BodyLevel::Waist,       BodyLevel::BelowWaist};
-  const Direction fingers[] = {{0, 1, 0}, {1, 0, 0}};  // fingers up; across the body
   float worst = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
@@ -683,11 +671,9 @@ TEST(SynthesisCollision, FistsTouchingBesideTheFarSideAreHeldToTheirMeasuredDept
     std::string error;
     ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
     for (int across = 0; across < 2; ++across)
-      for (BodyLevel level : levels) {
-        notation::SignSpec s = sign_at(fist(), level, Side::LeftBeside, Contact::Touch);
-        s.dominant.orientation.extended_finger = fingers[across];
-        s.dominant.orientation.palm = {0, 0, -1};
-        SynthesisResult r = synth.sign(s, SynthesisOptions{});
+      for (BodyLevel level : kFarSideLevels) {
+        // The fist with the fingers up (far_side_sign's hand 1) and across the body (hand 3).
+        SynthesisResult r = synth.sign(far_side_sign(across ? 3 : 1, level, Contact::Touch), SynthesisOptions{});
         ASSERT_TRUE(r.ok()) << r.errors[0].message;
         float key = 0.0f, clip = 0.0f;
         crossing_arm_depths(ctx, r, kRight, &key, &clip);
@@ -787,8 +773,6 @@ TEST(SynthesisCollision, TheRestingArmGivesWayToAHandAtTheFarSide) {
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
   if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
-  const notation::HandShape shapes[] = {flat(), fist(), index_point(), fist(), index_point()};
-  const Direction fingers[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
   const BodyLevel levels[] = {BodyLevel::Shoulders, BodyLevel::ShoulderTop, BodyLevel::Chest, BodyLevel::Stomach,
                               BodyLevel::Belly,     BodyLevel::Waist,       BodyLevel::BelowWaist};
   int over = 0;
@@ -799,13 +783,10 @@ TEST(SynthesisCollision, TheRestingArmGivesWayToAHandAtTheFarSide) {
     SynthContext ctx;
     std::string error;
     ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
-    for (int shape = 0; shape < 5; ++shape)
+    for (int shape = 0; shape < kFarSideHands; ++shape)
       for (BodyLevel level : levels)
         for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
-          notation::SignSpec s = sign_at(shapes[shape], level, Side::LeftBeside, c);
-          s.dominant.orientation.extended_finger = fingers[shape];
-          s.dominant.orientation.palm = {0, 0, -1};
-          SynthesisResult r = synth.sign(s, SynthesisOptions{});
+          SynthesisResult r = synth.sign(far_side_sign(shape, level, c), SynthesisOptions{});
           ASSERT_TRUE(r.ok()) << r.errors[0].message;
           float in_other = 0.0f;
           PoseBuilder pb(ctx.rig);
