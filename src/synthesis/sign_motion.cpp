@@ -105,6 +105,18 @@ struct HandState {
   glm::quat wrist_turn{1, 0, 0, 0};
 };
 
+// The arm target that holds a hand state as it is: its contact offset, orientation and swivel
+// (no swivel search), at `point`.
+ArmTarget held_state_target(const HandState& h, const glm::vec3& point) {
+  ArmTarget t;
+  t.point = point;
+  t.contact_offset = h.offset;
+  t.hand_delta = h.delta;
+  t.auto_swivel = false;
+  t.swivel_rad = h.swivel;
+  return t;
+}
+
 // A movement's hand turn, seed 004's orientation change within a gesture (eq. (7)'s S_beg ->
 // S_end): a turn larger than kAmbiguousTurnRad (150 degrees) may go either way round
 // (choose_turn_direction), and no step turns the hand faster on average than
@@ -681,12 +693,7 @@ glm::vec3 other_hand_point(Solver& solver, const HandPlan& plan, const HandPlan&
                            const HandState& other_key, HandPlace place, int finger, float distance_m) {
   const Rig& rig = solver.rig;
   PoseBuilder pb(rig);
-  ArmTarget ot;
-  ot.point = other_key.target;
-  ot.contact_offset = other_key.offset;
-  ot.hand_delta = other_key.delta;
-  ot.auto_swivel = false;
-  ot.swivel_rad = other_key.swivel;
+  const ArmTarget ot = held_state_target(other_key, other_key.target);
   ArmPose op = solve_arm(rig, other_plan.side, ot);
   apply_arm(rig, other_plan.side, op, &pb);
   pose_fingers(rig, other_plan.side, other_key.angles, op.hand, &pb);
@@ -829,12 +836,7 @@ float key_pose_depth(Solver& solver, const std::array<HandPlan, 2>& plans, const
   const Rig& rig = ctx.rig;
   const HandPlan& plan = plans[0];
   const bool touch = is_touch(plan.spec.location.contact);
-  ArmTarget t;
-  t.point = st.target;
-  t.contact_offset = st.offset;
-  t.hand_delta = st.delta;
-  t.auto_swivel = false;
-  t.swivel_rad = st.swivel;
+  ArmTarget t = held_state_target(st, st.target);
   t.body = &ctx.body;
   t.hand_contact = touch;
   const ArmPose ap = solve_arm(rig, plan.side, t);
@@ -1147,12 +1149,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
       for (int way = 0; way < 2; ++way)
         for (float s : {0.25f, 0.5f, 0.75f}) {
           const HandState h = mix_state(from[i], goal[i], s);
-          ArmTarget t;
-          t.point = h.target + place;
-          t.contact_offset = h.offset;
-          t.hand_delta = way ? slerp_other_way(from[i].delta, goal[i].delta, s) : h.delta;
-          t.auto_swivel = false;
-          t.swivel_rad = h.swivel;
+          ArmTarget t = held_state_target(h, h.target + place);
+          if (way) t.hand_delta = slerp_other_way(from[i].delta, goal[i].delta, s);
           t.body = ctx.options.avoid_collisions ? &ctx.body : nullptr;
           t.hand_contact = plans[i].exempt_trunk;
           const ArmPose ap = solve_arm(rig, plans[i].side, t);
