@@ -56,6 +56,9 @@ bool is_touch(Contact c) {
 // The furthest a hand held off the far side's beside places is searched from the place (m):
 // inside the 3-10 cm band with a centimetre to spare for the contact part's reach error.
 constexpr float kFarBesideHeldOff_m = 0.09f;
+// A hand held off a body place whose orientation misses by more than this (10 degrees, the
+// acceptance's palm bound) searches the no-contact band for a better place (key_state).
+constexpr float kBandSearchAboveRad = 0.17f;
 
 float contact_distance(Contact c, bool on_hand) {
   if (is_touch(c)) return 0.0f;
@@ -337,10 +340,10 @@ struct Solver {
         float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + best.body_cost;
         bool moved = false;
         glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
-        auto try_ring = [&](float dx) {
+        auto try_ring = [&](float dx, float lift) {
           for (float du : up_steps)
             for (float dz : in_steps) {
-              glm::vec3 shift = du * rig.up + dz * rig.forward + dx * outward;
+              glm::vec3 shift = (du + lift) * rig.up + dz * rig.forward + dx * outward;
               t.point = base + shift;
               ArmPose p = solve_arm(rig, plan.side, t);
               float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m +
@@ -353,8 +356,8 @@ struct Solver {
               }
             }
         };
-        try_ring(0.0f);
-        try_ring(0.08f);
+        try_ring(0.0f, 0.0f);
+        try_ring(0.08f, 0.0f);
         // Further out to the hand's own side only while the orientation still misses by more
         // than 10 degrees (so most signs pay nothing for it). Fingers pointing out to that side
         // with the palm down need the forearm to point that way: from a hand in front of the
@@ -363,7 +366,10 @@ struct Solver {
         // trunk is there, see solve_arm); with the hand in front of the shoulder the elbow stays
         // at the side and the forearm points out.
         for (float dx : {0.16f, 0.24f})
-          if (best.orientation_error_rad > 0.17f) try_ring(dx);
+          if (best.orientation_error_rad > 0.17f) try_ring(dx, 0.0f);
+        for (float lift : {0.12f})
+          for (float dx : {0.0f, 0.08f})
+            if (best.orientation_error_rad > 0.17f) try_ring(dx, lift);
         if (moved) {
           t.point = st.target;
           t.auto_swivel = true;
@@ -461,6 +467,52 @@ struct Solver {
               st.target = t.point;
             }
           }
+      }
+      // A hand held off a place on the body (no contact, or close) may be anywhere within the
+      // no-contact band round it (3-10 cm, issue 4), not only straight out along the place's
+      // normal. Where the written distance leaves the orientation more than 10 degrees off, the
+      // band is searched for the place the wrist realises it best, as neutral space is: a few
+      // centimetres higher, lower, out or further off change the forearm's direction, and with
+      // it what the twist and the wrist's deviation must supply (the Ukrainian letters at the
+      // chest, seed 004's L1: 9-19 degrees off held 7 cm straight out). Placements are compared
+      // at the chosen swivel, the winner gets its own swivel search and is kept only if it
+      // still scores better; the distances stay a centimetre inside the band for the contact
+      // part's reach error.
+      else if (spec.location.kind == Location::Kind::Body && !is_touch(spec.location.contact) &&
+               spec.location.contact != Contact::ArmExtended && !far_side_place(plan, spec.location) &&
+               best.orientation_error_rad > kBandSearchAboveRad) {
+        const glm::vec3 written = st.target;
+        const glm::vec3 n = glm::normalize(anchor.normal);
+        const glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
+        ArmTarget fixed = t;
+        fixed.auto_swivel = false;
+        fixed.swivel_rad = best.swivel_rad;
+        auto cost = [&](const ArmPose& p, glm::vec3 target) {
+          return 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(target - written) +
+                 p.body_cost;
+        };
+        const float original_cost = cost(best, written);
+        float best_cost = original_cost;
+        glm::vec3 best_point = written;
+        for (float distance : {0.05f, 0.07f, 0.09f})
+          for (float up : {-0.8f, -0.4f, 0.0f, 0.4f, 0.8f})
+            for (float out : {-0.4f, 0.0f, 0.4f, 0.8f}) {
+              fixed.point = anchor.point + distance * glm::normalize(n + up * rig.up + out * outward);
+              const ArmPose p = solve_arm(rig, plan.side, fixed);
+              const float c = cost(p, fixed.point);
+              if (c < best_cost) {
+                best_cost = c;
+                best_point = fixed.point;
+              }
+            }
+        if (best_point != written) {
+          t.point = best_point;
+          const ArmPose p = solve_arm(rig, plan.side, t);
+          if (cost(p, best_point) < original_cost) {
+            best = p;
+            st.target = best_point;
+          }
+        }
       }
       // An orientation that puts the arm in the body gives way (arm_ik.h).
       t.point = st.target;
