@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "synthesis/collision.h"
+#include "synthesis/orientation.h"
 #include "synthesis/phrase_text.h"
 #include "synthesis/sign_motion.h"
 #include "synthesis/signing_avatar.h"
@@ -84,6 +85,60 @@ TEST_P(SynthesisAlphabet, EveryTransitionBetweenTwoLettersIsFreeOfPenetration) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Data, SynthesisAlphabet, ::testing::Values("ase", "ukl"));
+
+// Issue 4's acceptance, per letter: the palm normal within 10 degrees of the requested direction.
+// Every letter of both alphabets and every digit, on the reference humanoid and the project
+// avatar, at its key pose (the first frame of the letter): the requested hand frame
+// (orientation_frame) against the posed one. A letter held off a body place (the Ukrainian
+// letters at the chest, no contact) also stays in the 3-10 cm no-contact band. Before the
+// no-contact band search and the ASL letters' move from the shoulder to neutral space, the ASL
+// letters were 28 degrees off on the reference humanoid and 34 on the project avatar, the
+// Ukrainian letters up to 14.5 and 19.2 (docs/SYNTHESIS.md, Orientation of the letters).
+TEST(SynthesisAlphabetOrientation, EveryLetterAndDigitHoldsItsPalmWithin10DegreesOnBothRigs) {
+  std::string error;
+  testing::NamedRigs rigs = testing::reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  // Letters that truly cannot meet the bound, with the figure they are held to and why: none.
+  const std::map<std::string, float> known_palm_deg = {};
+  int checked = 0;
+  for (const char* file : {"ase/alphabet", "ase/digits", "ukl/alphabet"}) {
+    std::string text;
+    std::vector<AlphabetEntry> entries;
+    if (!testing::read_text_file(kRoot + "/data/" + file + ".jsonl", &text)) GTEST_SKIP() << "no data " << file;
+    ASSERT_TRUE(parse_alphabet_jsonl(text, &entries, &error)) << error;
+    for (const auto& rg : rigs) {
+      Rig rig;
+      ASSERT_TRUE(build_rig(rg.second, &rig, &error)) << error;
+      Synthesizer synth(rg.second);
+      ASSERT_TRUE(synth.ok()) << synth.error();
+      float worst = 0.0f;
+      for (const auto& e : entries) {
+        PhraseText t = phrase_from_text(e.notation, {});
+        ASSERT_TRUE(t.ok()) << e.letter;
+        const notation::SignSpec& sign = t.items[0].sign;
+        SynthesisResult r = synth.sign(sign, SynthesisOptions{});
+        ASSERT_TRUE(r.ok()) << e.letter << ": " << r.errors[0].message;
+        PoseBuilder pose = testing::frame_pose(rig, r.clip, testing::first_sign_frame(r.clip));
+        const HandFrame requested = orientation_frame(rig, sign.dominant.orientation, kRight, false);
+        const HandFrame posed = posed_hand_frame(rig, kRight, pose.delta(rig.arms[kRight].hand));
+        const float palm_deg = testing::deg(std::acos(std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f)));
+        const std::string key = std::string(file) + " " + rg.first + " " + e.letter;
+        auto known = known_palm_deg.find(key);
+        EXPECT_LE(palm_deg, known == known_palm_deg.end() ? 10.0f : known->second) << key << ": the palm is off its direction";
+        if (sign.dominant.location.kind == notation::Location::Kind::Body &&
+            sign.dominant.location.contact == notation::Contact::None) {
+          ASSERT_FALSE(r.report.contact_distances_m.empty()) << key;
+          EXPECT_GE(r.report.contact_distances_m[0], 0.03f) << key << ": held off, but too near its place";
+          EXPECT_LE(r.report.contact_distances_m[0], 0.10f) << key << ": held off, but too far from its place";
+        }
+        worst = std::max(worst, palm_deg);
+        ++checked;
+      }
+      RecordProperty(std::string(file) + " " + rg.first + " worst_palm_deg", std::to_string(worst));
+    }
+  }
+  EXPECT_GE(checked, 26 + 11 + 33);
+}
 
 TEST(SynthesisLexicon, ArmsStayOutOfTheBodyAndOfEachOther) {
   std::string text;
