@@ -418,13 +418,13 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed) {
   //   78 m/s^2; 35 at 30 fps x 1): the elbow speeds up over the movement's last 0.1 s while
   //   the wrist slows, and stops within a frame: the wrist turns through a flip there (6 rad/s
   //   x speed) and the arm meets the free solution where that ends.
-  // - UNDERSTAND (both rigs, 30 fps x 1.25, the elbow in the transition from rest): 32 m/s^2 at
-  //   speed 1, and the speed factor scales every duration, so accelerations by its square
-  //   (x 1.56): a faster signer, not a sampling artefact.
+  // UNDERSTAND (both rigs, 30 fps x 1.25, the elbow in the rest transitions: 50.4 / 53.0 m/s^2,
+  // 31-35 at speed 1; the speed factor divides every duration, so accelerations grow with its
+  // square) is within the bounds (39.5 / 39.9 m/s^2) since a transition's k is stretched until no
+  // arm joint accelerates beyond 40 m/s^2 (transition.cpp kArmPeakAccelMPerS2,
+  // RestTransitionsKeepTheArmWithinHumanAccelerationAtAFasterSpeed). 7 sign-settings are over now.
   const std::map<std::string, Limit> known = {
-      {"avatar UNDERSTAND", {kMaxSpeedMPerS, 51.0f}},
       {"reference TEACHER", {kMaxSpeedMPerS, 78.0f}},
-      {"reference UNDERSTAND", {kMaxSpeedMPerS, 54.0f}},
       {"reference OLD", {kMaxSpeedMPerS, 153.0f}},
   };
   int over = 0, settings = 0;
@@ -463,6 +463,73 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAtEveryFrameRateAndSpeed) {
   RecordProperty("sign_settings_over_human_bounds", std::to_string(over) + "/" + std::to_string(settings));
   RecordProperty("worst_speed_m_per_s", std::to_string(worst.speed) + " " + worst.speed_what);
   RecordProperty("worst_accel_m_per_s2", std::to_string(worst.accel) + " " + worst.accel_what);
+}
+
+// A faster signer still has a human arm. The speed factor divides every duration, so along the
+// same path every acceleration grows with its square: UNDERSTAND's raise to the forehead (its
+// elbow swinging from behind the arm to in front of it between two of the hand path's
+// waypoints) measured 31-35 m/s^2 at speed 1 and 50.4 (project avatar) / 53.0 (reference) at
+// 30 fps x 1.25. A transition's states now keep every arm joint within 40 m/s^2 (transition.cpp,
+// kArmPeakAccelMPerS2): at 1.25 and 1.5 (30 and 60 fps) every rest transition of the lexicon
+// keeps its wrists and elbows within that, +2 m/s^2 for the windows straddling the sign's first
+// or last frame (measured 41.5, SISTER on the reference humanoid at 60 fps x 1.5; before, 64.8 /
+// 68.2, YESTERDAY / TEACH at 1.5), measured as the lexicon test measures.
+TEST_P(MotionSmoothness, RestTransitionsKeepTheArmWithinHumanAccelerationAtAFasterSpeed) {
+  std::string text;
+  if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  PoseBuilder pb(rig_);
+  const int J = rig_.joint_count;
+  float worst = 0.0f;
+  std::string worst_what;
+  int checked = 0;
+  bool saw_understand = false;
+  for (const testing::LexiconSign& sign : testing::lexicon_signs(text)) {
+    ASSERT_TRUE(sign.text.ok()) << sign.gloss;
+    saw_understand |= sign.gloss == "UNDERSTAND";
+    for (float fps : {30.0f, 60.0f})
+      for (float speed : {1.25f, 1.5f}) {
+        SynthesisOptions o;
+        o.fps = fps;
+        o.speed = speed;
+        SynthesisResult r = synth.phrase(sign.text.items, o);
+        ASSERT_TRUE(r.ok()) << sign.gloss;
+        const Clip& c = r.clip;
+        const int W = std::max(1, static_cast<int>(std::lround(kWindowS * c.fps)));
+        const float win_s = static_cast<float>(W) / c.fps;
+        for (const ClipSegment& seg : c.segments) {
+          if (seg.kind != ClipSegment::Kind::Transition) continue;
+          const int first = static_cast<int>(std::lround(seg.start_s * c.fps));
+          const int last = std::min(c.frame_count - 1, static_cast<int>(std::lround(seg.end_s * c.fps)));
+          std::vector<std::array<glm::vec3, 4>> pos;
+          for (int f = std::max(0, first - W); f <= std::min(c.frame_count - 1, last + W); ++f) {
+            pb.set_from_local(&c.rotations[static_cast<size_t>(f) * J]);
+            pos.push_back({pb.position(rig_.arms[kLeft].hand), pb.position(rig_.arms[kLeft].lower),
+                           pb.position(rig_.arms[kRight].hand), pb.position(rig_.arms[kRight].lower)});
+          }
+          const int offset = std::max(0, first - W);
+          for (int f = first; f <= last; ++f) {
+            const int i = f - offset;
+            if (i - W < 0 || i + W >= static_cast<int>(pos.size())) continue;
+            for (int k = 0; k < 4; ++k) {
+              const float a = glm::length(pos[i + W][k] - 2.0f * pos[i][k] + pos[i - W][k]) / (win_s * win_s);
+              if (a > worst) {
+                worst = a;
+                char buf[64];
+                std::snprintf(buf, sizeof buf, " at %g fps x %g: ", fps, speed);
+                worst_what = sign.gloss + buf + where_in(c, f);
+              }
+            }
+          }
+          ++checked;
+        }
+      }
+  }
+  EXPECT_TRUE(saw_understand) << "UNDERSTAND is not in the lexicon";
+  EXPECT_GE(checked, 4 * 2 * 110);
+  EXPECT_LE(worst, 42.0f) << worst_what;
+  RecordProperty("worst_rest_transition_accel_m_per_s2", std::to_string(worst) + " " + worst_what);
 }
 
 // A hand that leaves its touch while it turns (THANK-YOU: the fingertips at the chin, fingers up,
