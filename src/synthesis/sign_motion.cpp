@@ -1518,11 +1518,12 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // and GOOD's 10.9 mm in the torso on the reference humanoid (25 fps x 1, 30 fps x 1.25); with
   // it at 2 mm (every round alike) the one-frame fixes stayed (OLD above). At 4 mm (a 1 mm
   // margin) it still made one: OLD on the reference humanoid at 60 fps, where the swivel each
-  // frame needs changes faster than any ramp (the frame before clear at +1.2 rad and in the head
-  // at +1.5, this one in the torso at +1.2): the forearm 4.x mm deep got +0.3 rad for that frame
-  // alone, the elbow 8.7 cm up and back (153 m/s^2). A frame within the bound is not worth a
-  // jerk: at 4.9 mm OLD's elbow keeps to 22-32 m/s^2 at 60 fps and its arm goes 4.6 -> 4.7 mm
-  // deep (ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs); nothing else in the lexicon changes.
+  // frame needs changes faster than any ramp (the frame before clear at +1.2 rad and over 2 mm
+  // deep at +1.5, this one in the torso at +1.2): the forearm 4.x mm deep got +0.3 rad for
+  // that frame alone, the elbow 8.7 cm up and back (153 m/s^2). A frame within the bound is not
+  // worth a jerk: at 4.9 mm OLD's elbow keeps to 22-32 m/s^2 at 60 fps and its arm goes 4.6 ->
+  // 4.7 mm deep (MotionSmoothness.EveryLexiconSignMovesHumanlyAndKeepsItsArmsOut...); nothing
+  // else in the lexicon changes.
   constexpr float kRampOnlyClearM = 0.0049f;
   auto solve_frames = [&](const std::vector<char>* redo) {
     if (!redo || (*redo)[0]) {
