@@ -856,8 +856,11 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     for (int j : {a.shoulder, a.upper, a.lower, a.hand})
       if (j >= 0) arm_joints[static_cast<size_t>(j)] = true;
   // The fingers' (and fingertips') longest step a frame: kHandPathFingerPeakMPerS, scaled as
-  // eq. (10)'s k is (the global speed divides every duration).
-  const float finger_peak_m = kHandPathFingerPeakMPerS * speed / fps;
+  // eq. (10)'s k is (the global speed divides every duration) below speed 1, and not above it:
+  // a faster signer's hand is no faster than a human hand. Scaled by 1.25, the peak was
+  // 3.1 m/s and 605 of the lexicon's 846 sign-settings at speed 1.25 (both rigs, 25/30/60 fps)
+  // had a fingertip over the 3 m/s bound in a rest transition (up to 3.48 m/s, MAN's middle tip).
+  const float finger_peak_m = kHandPathFingerPeakMPerS * std::min(speed, 1.0f) / fps;
   TransitionPlan p;
   p.lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p.k = transition_states(p.lmax_m, fps, speed);
