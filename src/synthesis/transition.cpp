@@ -408,7 +408,8 @@ float arm_accel_of(const std::vector<glm::vec3>& pos, size_t n, int k, float fps
   auto at = [&](int i, size_t j) { return pos[static_cast<size_t>(std::min(std::max(i, 0), k)) * n + j]; };
   float worst = 0.0f;
   for (int i = 1 - window; i < k + window; ++i)
-    for (size_t j = 0; j < n; ++j) worst = std::max(worst, glm::length(at(i + window, j) - 2.0f * at(i, j) + at(i - window, j)));
+    for (size_t j = 0; j < n; ++j)
+      worst = std::max(worst, glm::length(at(i + window, j) - 2.0f * at(i, j) + at(i - window, j)));
   return worst / (window_s * window_s);
 }
 
@@ -1024,8 +1025,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   plan.lmax_m = direct.length_m();  // transition_path_m
   plan.k = transition_states(plan.lmax_m, fps, speed);
   interpolate(from, to, {}, J, plan.k, &plan.frames);
-  stretch_for_arm_accel(rig, from, to, fps, [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, {}, J, k, out); },
-                        false, &plan.k, &plan.frames);
+  auto sample_direct = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, {}, J, k, out); };
+  stretch_for_arm_accel(rig, from, to, fps, sample_direct, false, &plan.k, &plan.frames);
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
     for (int i = 1; i < k; ++i) {
@@ -1125,8 +1126,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     p.k = transition_states(p.lmax_m, fps, speed);
     p.via_points = static_cast<int>(vias.size());
     interpolate(from, to, vias, J, p.k, &p.frames);
-    stretch_for_arm_accel(rig, from, to, fps, [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, vias, J, k, out); },
-                          false, &p.k, &p.frames);
+    auto sample_vias = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, vias, J, k, out); };
+    stretch_for_arm_accel(rig, from, to, fps, sample_vias, false, &p.k, &p.frames);
     p.exempt = exempt_for(p.k);
     const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);

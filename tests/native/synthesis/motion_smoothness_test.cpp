@@ -414,10 +414,11 @@ PhysicalWorst measure_physical(const Rig& rig, const Clip& clip, bool fingertips
 
 // Every lexicon sign, from the rest pose and back as the page plays it, at 25/30/60 fps x speed
 // 0.8/1.0/1.25: wrists and elbows within 3 m/s and 50 m/s^2 (the bounds above, in seconds), the
-// fingertips too (their known gaps below), and the arms out of the trunk and out of each other within 5 mm outside intended contact. The frame
-// rate and speed change the transitions' state count k, so a path judged on its own frames could
-// be clear at one setting and not at another. 141 signs x 9 settings a rig: one pass measures
-// both on the same clips (they were two tests synthesising the same 2,538 phrases).
+// fingertips too (their known gaps below), and the arms out of the trunk and out of each other
+// within 5 mm outside intended contact. The frame rate and speed change the transitions' state
+// count k, so a path judged on its own frames could be clear at one setting and not at another.
+// 141 signs x 9 settings a rig: one pass measures both on the same clips (they were two tests
+// synthesising the same 2,538 phrases).
 TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAndKeepsItsArmsOutAtEveryFrameRateAndSpeed) {
   std::string text;
   if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
@@ -522,8 +523,10 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAndKeepsItsArmsOutAtEveryFr
         ++settings;
         if (w.speed > sw.speed) sw.speed = w.speed, sw.speed_what = setting + w.speed_what;
         if (w.accel > sw.accel) sw.accel = w.accel, sw.accel_what = setting + w.accel_what;
-        if (tips.speed > sign_tips.speed) sign_tips.speed = tips.speed, sign_tips.speed_what = setting + tips.speed_what;
-        if (tips.accel > sign_tips.accel) sign_tips.accel = tips.accel, sign_tips.accel_what = setting + tips.accel_what;
+        if (tips.speed > sign_tips.speed)
+          sign_tips.speed = tips.speed, sign_tips.speed_what = setting + tips.speed_what;
+        if (tips.accel > sign_tips.accel)
+          sign_tips.accel = tips.accel, sign_tips.accel_what = setting + tips.accel_what;
       }
     const std::string key = std::string(GetParam()) + " " + sign.gloss;
     auto kt = known_tips.find(key);
