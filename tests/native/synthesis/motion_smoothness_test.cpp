@@ -462,7 +462,11 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAndKeepsItsArmsOutAtEveryFr
   // - TEACHER (reference; 0.8 and 60 fps, the left elbow in the sign's last movement, up to
   //   78 m/s^2; 35 at 30 fps x 1): the elbow speeds up over the movement's last 0.1 s while
   //   the wrist slows, and stops within a frame: the wrist turns through a flip there (6 rad/s
-  //   x speed) and the arm meets the free solution where that ends.
+  //   x speed) and the arm meets the free solution where that ends. Traced further: the folded
+  //   arm at the elbow's and all three wrist angles' limits beside the forehead, the contact
+  //   2 -> 45 mm short, the clavicle elevation wobbling frame by frame (docs/SYNTHESIS.md).
+  //   With the swivel's zero leaning forward over the shoulder (arm_ik.cpp, merged from main):
+  //   58.1 m/s^2 at 0.8 (30 and 60 fps), 52.9-53.0 at 1.25, 43.2 at 60 fps x 1 (was 77.5).
   // UNDERSTAND (both rigs, 30 fps x 1.25, the elbow in the rest transitions: 50.4 / 53.0 m/s^2,
   // 31-35 at speed 1; the speed factor divides every duration, so accelerations grow with its
   // square) is within the bounds (39.5 / 39.9 m/s^2) since a transition's k is stretched until no
@@ -470,7 +474,7 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAndKeepsItsArmsOutAtEveryFr
   // RestTransitionsKeepTheArmWithinHumanAccelerationAtAFasterSpeed). With OLD, 4 sign-settings are
   // over now (TEACHER's).
   const std::map<std::string, Limit> known = {
-      {"reference TEACHER", {kMaxSpeedMPerS, 78.0f}},
+      {"reference TEACHER", {kMaxSpeedMPerS, 59.0f}},
   };
   // Fingertips, over the same window: the hand's bounds (3 m/s; 50.4 m/s^2, the hand's 56 mm
   // change of a 30 fps step). Before the hand path's fingertip peak stopped scaling with the
@@ -485,7 +489,7 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAndKeepsItsArmsOutAtEveryFr
   //   lexicon's worst there), LOOK (the V hand's turn), 60 and 30 fps x 1.25;
   // - TEACH and TEACHER on the avatar: the middle fingertip in the rest transition at 1.25.
   const std::map<std::string, float> known_tips = {
-      {"reference TEACHER", 67.0f}, {"reference PLEASE", 66.0f}, {"avatar LOOK", 54.0f},
+      {"reference TEACHER", 63.0f}, {"reference PLEASE", 66.0f}, {"avatar LOOK", 54.0f},
       {"avatar TEACH", 52.0f},      {"avatar TEACHER", 52.0f},   {"avatar PLEASE", 51.0f},
   };
   PhysicalWorst worst_tips;
@@ -702,6 +706,27 @@ TEST_P(MotionSmoothness, AHandLeavingATouchWhileItTurnsCarriesItsWristAlongThePa
     EXPECT_LE(w.speed, kMaxSpeedMPerS) << w.speed_what;
     EXPECT_LE(w.accel, kMaxAccelMPerS2) << w.accel_what;
   }
+}
+
+// A hand turned half round in place above the shoulder (not in the lexicon): the pinched hand at
+// the forehead, fingers in, replaced by a flat hand pointing forward. Its wrist passes straight
+// over the shoulder joint, where the swivel's zero (the elbow "down", arm_ik.cpp solve_chain)
+// turned half round: the project avatar's elbow jumped 194 mm in a frame (243 mm change of step),
+// the reference humanoid's 90 mm. Both now within the hand's bounds (measured 84 / 41 mm on the
+// avatar, 89 / 46 mm on the reference: what is left is the elbow's sweep from the key pose's
+// swivel to the goal's over the replace, not a jump).
+TEST_P(MotionSmoothness, AHandTurnedHalfRoundInPlaceOverTheShoulderMovesItsElbowSmoothly) {
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  const PhraseText t =
+      phrase_from_text("R(H(pinchall, bent), E(i), P(d), Loc(forehead, centre, touch), M(replace, H(flat), E(o), P(d)))", {});
+  ASSERT_TRUE(t.ok());
+  SynthesisResult r = synth.phrase(t.items, from_key_pose());
+  ASSERT_TRUE(r.ok());
+  const Worst w = measure(rig_, r.clip);
+  expect_smooth(GetParam(), w, Bound{});
+  RecordProperty("worst_step_mm", std::to_string(w.step_m * 1000.0f) + " " + w.step_what);
+  RecordProperty("worst_change_mm", std::to_string(w.change_m * 1000.0f) + " " + w.change_what);
 }
 
 INSTANTIATE_TEST_SUITE_P(Rigs, MotionSmoothness, ::testing::Values("avatar", "reference"));
