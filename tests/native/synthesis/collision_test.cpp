@@ -418,11 +418,10 @@ TEST(SynthesisCollision, HandBesideTheFarSideReachesRoundTheFrontOfTheChest) {
   rigs.push_back({"reference", make_reference_humanoid(), {}});
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
-  // Project avatar below the waist: the place 28 cm out from the midline, the arm at full
-  // stretch across the hips; close and none 12.9 mm (the turned body measured no shallower, so
-  // the key pose keeps the unturned one).
-  if (project.present)
-    rigs.push_back({"avatar", std::move(project.avatar), {{BodyLevel::BelowWaist, {5.0f, 13.0f, 13.0f}}}});
+  // Project avatar below the waist: within 5 mm since the place came in to 4 cm off the hips'
+  // silhouette (body_anchors.cpp kBesideLegsClearMax_m); before, 28 cm out from the midline, the
+  // arm at full stretch across the hips, close and none 12.9 mm (now 0.2).
+  if (project.present) rigs.push_back({"avatar", std::move(project.avatar), {}});
   float worst_key = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
@@ -635,9 +634,10 @@ TEST(SynthesisCollision, FarSideRestTransitionsBringTheHandAcrossInFront) {
 // project avatar's belly 4.2 / 5.7, waist 11.1 / 13.2, below the waist 72.0 / 79.3 mm. Higher up
 // a turn would carry the place with the chest (those anchors are on the upper chest) and change
 // nothing. Each case over 5 mm is held to its depth as measured, rounded up to the next half
-// millimetre; the others to 5 mm. Below the waist the project avatar's fist also stops short of
-// the place (before 44.8 / 31.2 mm, now 18.1 / 17.0 mm: the arm at full stretch 28 cm across the
-// hips), held too.
+// millimetre; the others to 5 mm. Below the waist the project avatar's fist also stopped short of
+// the place (44.8 / 31.2 mm, then 18.1 / 17.0 mm: the arm at full stretch 28 cm across the hips);
+// with the place 4 cm off the hips' silhouette (21.3 cm out, body_anchors.cpp) it touches (0.2 /
+// 0.1 mm) and is 22.8 / 20.4 mm deep (was 42.1 / 44.2).
 TEST(SynthesisCollision, FistsTouchingBesideTheFarSideAreHeldToTheirMeasuredDepth) {
   struct Gap { float fingers_up_mm, across_mm; };
   struct Rig_ { std::string name; avatar::Avatar avatar; std::map<BodyLevel, Gap> known; float below_waist_short_mm; };
@@ -658,14 +658,15 @@ TEST(SynthesisCollision, FistsTouchingBesideTheFarSideAreHeldToTheirMeasuredDept
   // Project avatar (fingers up / across): neck 1.9 / 2.0 (2.8 / 12.7, the forearm in the head,
   // before the head turned towards the hand at the far neck, sign_motion.cpp far_side_turns),
   // shoulders 14.9 / 13.2, shoulder top 7.6 / 18.1, chest 8.1 / 4.5, belly 1.8 / 0.4, waist
-  // 1.0 / 1.0, below the waist 42.1 / 44.2 mm.
+  // 1.0 / 1.0, below the waist 22.8 / 20.4 mm (42.1 / 44.2 and 18.1 / 17.0 mm short before the
+  // place came in, body_anchors.cpp kBesideLegsClearMax_m).
   if (project.present)
     rigs.push_back({"avatar", std::move(project.avatar),
                     {{BodyLevel::Shoulders, {15.0f, 13.5f}},
                      {BodyLevel::ShoulderTop, {8.0f, 18.5f}},
                      {BodyLevel::Chest, {8.5f, 5.0f}},
-                     {BodyLevel::BelowWaist, {42.5f, 44.5f}}},
-                    18.5f});
+                     {BodyLevel::BelowWaist, {23.0f, 20.5f}}},
+                    0.0f});
   float worst = 0.0f;
   for (const Rig_& rg : rigs) {
     Synthesizer synth(rg.avatar);
