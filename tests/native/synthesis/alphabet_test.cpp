@@ -19,6 +19,7 @@
 #include "synthesis/sign_motion.h"
 #include "synthesis/signing_avatar.h"
 #include "synthesis/synthesize.h"
+#include "arm_depths.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -84,36 +85,6 @@ TEST_P(SynthesisAlphabet, EveryTransitionBetweenTwoLettersIsFreeOfPenetration) {
 
 INSTANTIATE_TEST_SUITE_P(Data, SynthesisAlphabet, ::testing::Values("ase", "ukl"));
 
-// Deepest arm penetration over a clip (exemptions as synthesis applies them), split into arm in
-// the trunk and forearm through forearm.
-struct ArmDepths {
-  float trunk_m = 0.0f, forearms_m = 0.0f;
-  std::string trunk_what, forearms_what;
-};
-ArmDepths arm_depths(const SynthContext& ctx, const SynthesisResult& r) {
-  ArmDepths out;
-  PoseBuilder pb(ctx.rig);
-  const auto& ex = r.report.intended_contact;
-  for (int f = 0; f < r.clip.frame_count; ++f) {
-    pb.set_from_local(&r.clip.rotations[static_cast<size_t>(f) * ctx.rig.joint_count]);
-    for (Side s : {kLeft, kRight}) {
-      bool contact = ex[f] & exempt_bit(s, false);
-      bool hands = !(ex[f] & exempt_bit(s, true)) && !(ex[f] & exempt_bit(other(s), true));
-      Penetration t = arm_penetration(ctx.body, pb, s, true, contact, false);
-      if (t.depth_m > out.trunk_m) {
-        out.trunk_m = t.depth_m;
-        out.trunk_what = t.what + " at frame " + std::to_string(f);
-      }
-      Penetration p = arm_penetration(ctx.body, pb, s, false, contact, hands);
-      if (p.depth_m > out.forearms_m) {
-        out.forearms_m = p.depth_m;
-        out.forearms_what = p.what + " at frame " + std::to_string(f);
-      }
-    }
-  }
-  return out;
-}
-
 TEST(SynthesisLexicon, ArmsStayOutOfTheBodyAndOfEachOther) {
   std::string text;
   if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
@@ -140,7 +111,7 @@ TEST(SynthesisLexicon, ArmsStayOutOfTheBodyAndOfEachOther) {
     SynthesisResult r = synth.phrase(t.items, SynthesisOptions{});
     ASSERT_TRUE(r.ok()) << gloss << ": " << r.errors[0].message;
     ++signs;
-    ArmDepths d = arm_depths(ctx, r);
+    testing::ArmDepths d = testing::arm_depths(ctx, r);
     auto kt = known_trunk_mm.find(gloss);
     auto kf = known_forearms_mm.find(gloss);
     EXPECT_LE(d.trunk_m * 1000.0f, kt == known_trunk_mm.end() ? 5.0f : kt->second) << gloss << ": " << d.trunk_what;
@@ -186,7 +157,7 @@ TEST(SynthesisLexicon, LovesCrossingForearmsStayClearAtAnySpeedAndFrameRate) {
         opt.speed = speed;
         SynthesisResult r = synth.phrase(love->items, opt);
         ASSERT_TRUE(r.ok()) << r.errors[0].message;
-        ArmDepths d = arm_depths(ctx, r);
+        testing::ArmDepths d = testing::arm_depths(ctx, r);
         EXPECT_LE(d.forearms_m * 1000.0f, 5.0f) << rg.first << " fps " << fps << " speed " << speed << ": "
                                                 << d.forearms_what;
         EXPECT_LE(d.trunk_m * 1000.0f, 5.0f) << rg.first << " fps " << fps << " speed " << speed << ": "
@@ -203,66 +174,6 @@ TEST(SynthesisLexicon, LovesCrossingForearmsStayClearAtAnySpeedAndFrameRate) {
   RecordProperty("worst_arm_depth_mm", std::to_string(worst * 1000.0f));
 }
 
-
-// The whole lexicon at 25/30/60 fps x speed 0.8/1.0/1.25 on the reference humanoid and the project
-// avatar: no arm in the trunk or forearm through forearm beyond 5 mm outside intended contact.
-// The frame rate and speed change the transitions' state count k, so a path judged on its own
-// frames could be clear at one setting and not at another. Known gaps are held to their measured
-// worst over the nine settings (docs/SYNTHESIS.md, Known issues), per rig, so they cannot grow.
-// 141 signs x 9 settings x 2 rigs: about 2 500 phrases.
-TEST(SynthesisLexicon, ArmsStayOutAtEverySpeedAndFrameRateOnBothRigs) {
-  std::string text;
-  if (!testing::read_text_file(kRoot + "/data/ase/lexicon.jsonl", &text)) GTEST_SKIP() << "no data lexicon";
-  const std::vector<testing::LexiconSign> signs = testing::lexicon_signs(text);
-  std::string rig_error;
-  const testing::NamedRigs rigs = testing::reference_and_project_avatar(&rig_error);
-  ASSERT_TRUE(rig_error.empty()) << rig_error;
-  // Known gaps, the worst of the nine settings as measured (mm, rounded up to 0.1). None now on
-  // either rig; the reference humanoid's were, at their worst setting: DAY 5.6 (the upper arm
-  // across the chest as the wrist-led arc went beyond the arm's reach; the wrist now goes round
-  // the elbow), MORNING 7.0 (the left arm across the torso to the crook of the right elbow; that
-  // place now comes forward), HAPPY 9.9 (the brushing circle ran into the chest; it now starts at
-  // the chest), DIFFERENT 13.4 (crossed hands laid apart by alternating pushes; the pair is now
-  // laid clear of both hands and forearms), all in sign_motion.cpp / movement.cpp. SAD and HAVE
-  // (forearms through each other in the arriving transition at some state counts: 7.2/10.4 mm on
-  // the reference, 5.5 mm on the project avatar) are clear since a route's excess over its end
-  // poses adds the kinds (transition.cpp).
-  const std::map<std::string, float> known_mm = {};
-  float worst = 0.0f;
-  for (const auto& rg : rigs) {
-    Synthesizer synth(rg.second);
-    ASSERT_TRUE(synth.ok()) << synth.error();
-    SynthContext ctx;
-    std::string error;
-    ASSERT_TRUE(make_context(rg.second, SynthesisOptions{}, &ctx, &error)) << error;
-    for (const testing::LexiconSign& sign : signs) {
-      ASSERT_TRUE(sign.text.ok()) << sign.gloss;
-      float sign_worst = 0.0f;
-      std::string what;
-      for (float fps : {25.0f, 30.0f, 60.0f})
-        for (float speed : {0.8f, 1.0f, 1.25f}) {
-          SynthesisOptions opt;
-          opt.fps = fps;
-          opt.speed = speed;
-          SynthesisResult r = synth.phrase(sign.text.items, opt);
-          ASSERT_TRUE(r.ok()) << sign.gloss << ": " << r.errors[0].message;
-          ArmDepths d = arm_depths(ctx, r);
-          const float depth = std::max(d.trunk_m, d.forearms_m);
-          if (depth > sign_worst) {
-            sign_worst = depth;
-            what = "fps " + std::to_string(static_cast<int>(fps)) + " speed " + std::to_string(speed) + ": " +
-                   (d.trunk_m >= d.forearms_m ? d.trunk_what : d.forearms_what);
-          }
-        }
-      if (std::getenv("SIGNWEAVE_LEXICON_REPORT"))
-        std::printf("sweep %s %s %.1f %s\n", rg.first.c_str(), sign.gloss.c_str(), sign_worst * 1000.0f, what.c_str());
-      auto k = known_mm.find(rg.first + " " + sign.gloss);
-      EXPECT_LE(sign_worst * 1000.0f, k == known_mm.end() ? 5.0f : k->second) << rg.first << " " << sign.gloss << " " << what;
-      if (k == known_mm.end()) worst = std::max(worst, sign_worst);
-    }
-  }
-  RecordProperty("worst_arm_depth_mm", std::to_string(worst * 1000.0f));
-}
 
 // Every lexicon sign at the default settings, on the reference humanoid and the project avatar,
 // as the synthesis report gives it: a touch reaches its place (issue 4: reach error < 1 cm with
