@@ -13,12 +13,16 @@ float clampf(float v, float lo, float hi) { return std::min(hi, std::max(lo, v))
 struct Solved {
   ArmPose pose;
   glm::vec3 wrist;
+  glm::vec3 swivel_axis;  // the chain's (Chain::swivel_axis) at this pose
 };
 
 // Shoulder girdle + two-bone chain for one wrist target at one swivel angle.
 struct Chain {
   glm::quat shoulder{1, 0, 0, 0}, upper{1, 0, 0, 0}, lower0{1, 0, 0, 0};
   glm::vec3 wrist{0.0f};
+  // The swivel turns the whole arm about the shoulder-wrist line: a swivel larger by ds turns
+  // the upper arm and the forearm (and a hand on fixed wrist angles) by ds about this unit axis.
+  glm::vec3 swivel_axis{0.0f};
   float elbow_flex = 0.0f, elevation = 0.0f, protraction = 0.0f;
 };
 
@@ -121,12 +125,30 @@ Chain solve_chain(const Rig& rig, Side side, const glm::vec3& wrist_target, floa
   glm::vec3 axis = safe_normalize(to, out_dir);
   float cos_a = clampf((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f);
   float sin_a = std::sqrt(std::max(0.0f, 1.0f - cos_a * cos_a));
-  glm::vec3 down = reject(-rig.up, axis);
+  // The swivel's zero: the elbow down, the way down square to the shoulder-wrist line. With the
+  // wrist straight above the shoulder joint that way vanishes and turned half round as the line
+  // passed the vertical (the wrist going from in front of the shoulder to behind it): at a
+  // constant swivel the elbow swung across in one frame (a pinched hand at the forehead replaced
+  // in place by a flat hand pointing forward: the elbow 194 mm in a frame, 243 mm change of step,
+  // on the project avatar). Within 21 degrees of the vertical (kSwivelZeroUpright and up) the way
+  // down leans forward, where it points for a wrist in front of the shoulder, by up to
+  // kSwivelZeroLean, so the zero keeps pointing forward as the line passes the vertical. A zero
+  // square to the line must vanish somewhere (the hairy-ball theorem): this moves the turn from
+  // straight up to some 15 degrees behind the vertical (measured: the forehead replace's wrist
+  // goes 11 degrees behind). Leaning from 32 degrees (0.85) moved the forehead replace's elbow
+  // less evenly (104 mm a frame on the reference humanoid, over the 100 mm bound); a lean of 3
+  // for wrists behind the vertical only, from 60 degrees, put the turn 50 degrees behind but
+  // swung the reference's elbow (77 mm change of step).
+  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f;
+  const float upright = clampf((glm::dot(axis, rig.up) - kSwivelZeroUpright) / (0.99f - kSwivelZeroUpright), 0.0f, 1.0f);
+  const float lean = kSwivelZeroLean * upright * upright * (3.0f - 2.0f * upright);
+  glm::vec3 down = reject(-rig.up + lean * rig.forward, axis);
   if (glm::length(down) < 1e-3f) down = reject(-rig.forward, axis);
   down = glm::normalize(down);
   glm::vec3 outp = reject(out_dir, axis);
   outp = safe_normalize(reject(outp, down), glm::cross(axis, down));
   glm::vec3 sw = std::cos(swivel) * down + std::sin(swivel) * outp;
+  c.swivel_axis = glm::cross(down, outp);  // d sw / d swivel = swivel_axis x sw
   glm::vec3 elbow = shoulder_pos + l1 * (cos_a * axis + sin_a * sw);
   c.wrist = shoulder_pos + d * axis;
   c.elbow_flex = kPi - std::acos(clampf((l1 * l1 + l2 * l2 - d * d) / (2.0f * l1 * l2), -1.0f, 1.0f));
@@ -301,7 +323,7 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
     p.contact_point = c.wrist + carried(p);
     p.reach_error_m = glm::length(p.contact_point - t.point);
     p.orientation_error_rad = rotation_angle(glm::conjugate(t.hand_delta) * p.hand);
-    if (p.reach_error_m < best.pose.reach_error_m - 1e-5f) best = Solved{p, c.wrist};
+    if (p.reach_error_m < best.pose.reach_error_m - 1e-5f) best = Solved{p, c.wrist, c.swivel_axis};
     return p;
   };
   glm::vec3 wrist_target = t.point - t.hand_delta * t.contact_offset;
@@ -378,6 +400,65 @@ float elbow_behind_cost(const Rig& rig, Side side, const ArmPose& p) {
   return behind > 0.0f ? 3.0f * behind / a.upper_len_m : 0.0f;
 }
 
+// The forearm's twist excess carried to the shoulder. A signer whose pronation or supination
+// runs out takes the rest with the shoulder's internal/external rotation; with the wrist where the
+// target puts it, what the shoulder can still turn is the swivel: the whole arm turned about the
+// shoulder-wrist line, which rolls the forearm about its own axis in proportion to the cosine of
+// the angle between the two (all of it with the elbow straight, where the swivel is the upper
+// arm's own rotation; none with the forearm across that line, which only swings the hand). Where
+// the wrist's limits leave the hand off the request by the world rotation
+// e = requested * achieved^-1, turning the arm by ds about the swivel axis n (the wrist angles
+// kept) leaves angle(e^-1 R(n, ds)), least at ds = 2 atan2(e.xyz . n, e.w) (the closed form of
+// best_limited_angle).
+float swivel_towards(const glm::quat& requested, const glm::quat& hand, const glm::vec3& swivel_axis) {
+  const glm::quat e = requested * glm::conjugate(hand);
+  float ds = 2.0f * std::atan2(glm::dot(glm::vec3(e.x, e.y, e.z), swivel_axis), e.w);
+  if (ds > kPi) ds -= 2.0f * kPi;
+  if (ds <= -kPi) ds += 2.0f * kPi;
+  return ds;
+}
+
+// A wrist motion (ArmTarget::wrist_motion) that the wrist's limits cannot follow: the excess is
+// carried to the swivel. Only the motion's own excess: the swivel moves until what the turned
+// request still asks of it equals what the held orientation (the key pose's, which the swivel
+// search already traded against comfort and the body) asks at the frame's own swivel, so the
+// carry is 0 where the motion is (its ends) and grows with it. Each round moves the swivel by
+// that difference weighted by |cos|^3 of the angle between the forearm and the shoulder-wrist
+// line (the swivel's hold on the forearm's roll): the rest of a swivel swings the hand sideways,
+// which costs the elbow's travel for little of the roll. PLAY's forearm runs across that line and
+// its twists come back and forth: carried in full, its elbow swung 0.27 rad in 3 frames (72 m/s^2
+// at 60 fps x 1.25 on the reference humanoid); weighted by cos^2, 52.3 m/s^2 on the project avatar
+// (the smoothness bound is 50.4); by |cos|^3 it keeps under it, and a twist about a forearm 26
+// degrees off the line is still carried to 0.07 rad (arm_ik_test). The swivel stays within the shoulder's range (the swivel candidates', -92 to +115
+// degrees); a round is kept when the hand comes nearer its orientation and the contact point
+// stays on its target (reach no worse by 1 mm).
+constexpr int kCarryRounds = 3;
+Solved carry_wrist_motion_excess(const Rig& rig, Side side, const ArmTarget& t, Solved s, float lo, float hi) {
+  if (t.wrist_motion == glm::quat(1, 0, 0, 0) || s.pose.orientation_error_rad < 1e-3f) return s;
+  // The held orientation as the wrist realises it on this forearm (solve_wrist's clamped angles of
+  // the held orientation, before the motion turns the hand).
+  const WristFrame w = wrist_frame(rig, side);
+  const glm::quat held = t.hand_delta * glm::conjugate(t.wrist_motion);
+  const glm::quat lower0 = s.pose.lower * glm::conjugate(axis_angle(w.e1, s.pose.twist_rad));
+  float t0, r0, f0;
+  clamped_euler(w, glm::conjugate(lower0) * held, t.previous, &t0, &r0, &f0);
+  const glm::quat held_hand =
+      lower0 * axis_angle(w.e1, t0) * axis_angle(w.e2, r0 * w.radial_sign) * axis_angle(w.e3, f0);
+  const float held_asks = swivel_towards(held, held_hand, s.swivel_axis);
+  const float range_lo = std::min(lo, s.pose.swivel_rad), range_hi = std::max(hi, s.pose.swivel_rad);
+  for (int round = 0; round < kCarryRounds; ++round) {
+    const float hold = glm::dot(s.pose.lower * w.e1, s.swivel_axis);
+    const float ds = hold * hold * std::fabs(hold) * (swivel_towards(t.hand_delta, s.pose.hand, s.swivel_axis) - held_asks);
+    const float swivel = clampf(s.pose.swivel_rad + ds, range_lo, range_hi);
+    if (std::fabs(swivel - s.pose.swivel_rad) < 1e-3f) break;
+    Solved next = solve_at(rig, side, t, swivel);
+    if (next.pose.orientation_error_rad > s.pose.orientation_error_rad || next.pose.reach_error_m > s.pose.reach_error_m + 0.001f)
+      break;
+    s = next;
+  }
+  return s;
+}
+
 }  // namespace
 
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
@@ -387,8 +468,9 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
                                        &p->trunk_push_dir);
     return arm_trunk_cost(p->trunk_depth_m);
   };
+  const float hi = kSwivelLo + kSwivelStep * static_cast<float>(kSwivelCandidates - 1);
   if (!t.auto_swivel) {
-    ArmPose p = solve_at(rig, side, t, t.swivel_rad).pose;
+    ArmPose p = carry_wrist_motion_excess(rig, side, t, solve_at(rig, side, t, t.swivel_rad), kSwivelLo, hi).pose;
     if (t.body) p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
     return p;
   }
@@ -400,7 +482,6 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
   glm::vec3 v = t.point - rig.bind_pos[a.upper];
   float height = glm::dot(v, rig.up) / (a.upper_len_m + a.lower_len_m);
   float preferred = 0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f);
-  const float hi = kSwivelLo + kSwivelStep * static_cast<float>(kSwivelCandidates - 1);
   ArmPose best;
   float best_cost = 1e30f;
   auto consider = [&](float swivel) {

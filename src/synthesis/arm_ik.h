@@ -2,7 +2,8 @@
 // orientation. Analytic two-bone solve (upper arm, forearm) with the elbow on its swivel circle,
 // clavicle (shoulder joint) participation for high and far targets, and the wrist solved for the
 // orientation: forearm twist (pronation/supination) takes the roll, the wrist takes flexion and
-// deviation, each within anatomical limits; what the limits refuse stays as orientation error.
+// deviation, each within anatomical limits; what the limits refuse stays as orientation error,
+// but for a wrist motion's excess, which the shoulder's rotation (the swivel) takes.
 #pragma once
 
 #include "synthesis/collision.h"
@@ -52,6 +53,9 @@ struct ArmTarget {
   // Euler angles that went with the unclamped one (arm_ik.cpp fit_clamped_wrist). Before, a twist
   // driven into the limits (Й, its hand already at the forearm's, the ulnar and the extension
   // limit) saw the clamped wrist's orientation error jump 0.04 -> 0.47 rad in one frame.
+  // What the motion asks beyond the wrist's limits is carried to the shoulder's rotation (the
+  // swivel, turned by the motion's own excess, arm_ik.cpp carry_wrist_motion_excess): a twist
+  // 0.63 rad past the forearm's range with the arm held out ends 0.07 rad off instead of 0.63.
   glm::quat wrist_motion{1, 0, 0, 0};
   // Swivel continuity (auto_swivel only): the swivel this arm has at a neighbouring pose of the
   // same motion (the sign's key pose before this one). Without it, two poses a few centimetres

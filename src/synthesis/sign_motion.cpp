@@ -1782,6 +1782,11 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         push_offsets[f][i] = glm::vec3(0.0f);
       }
   }
+  out->orientation_error_rad.assign(frames.size(), 0.0f);
+  for (size_t f = 0; f < frames.size(); ++f)
+    for (int i = 0; i < 2; ++i)
+      if (plans[i].active)
+        out->orientation_error_rad[f] = std::max(out->orientation_error_rad[f], solved[f][i].orientation_error_rad);
   // Solved in the thorax frame: the clip's frames carry the turn in the trunk chain.
   if (solver.turn.active())
     for (int f = 0; f < out->frame_count; ++f)

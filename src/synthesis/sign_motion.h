@@ -46,6 +46,10 @@ struct SignMotion {
   std::vector<std::uint8_t> exempt;   // per frame, exempt_bit()s
   float max_reach_error_m = 0.0f;     // touch contacts at the key pose
   std::vector<float> contact_distance_m;  // per hand with a body/hand location: part -> anchor
+  // Per frame, the worst hand's arm IK orientation error (radians): the angle between the hand
+  // orientation the frame asked the arm for and the one the joint limits let it realise (arm_ik.h
+  // ArmPose::orientation_error_rad, of the frame's first solve; frame 0 is the key pose).
+  std::vector<float> orientation_error_rad;
   std::vector<std::string> warnings;
   int pushes = 0;                     // frames pushed out of the body
 };
