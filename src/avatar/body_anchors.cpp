@@ -27,6 +27,16 @@ constexpr std::array<const char*, 5> kFingerNames = {"thumb", "index", "middle",
 // held there (half a hand's thickness, ~1.5 cm, on either side of the place) stays off the skin
 // by more than a centimetre.
 constexpr float kBesideClear_m = 0.03f;
+// How far a `*_beside` place stays at most beyond the silhouette where a level's width takes in
+// the legs (below the waist: the hips and thighs). 1.6 half widths of that width put the place
+// 10.4 cm off the project avatar's hip (27.7 cm from the midline, against 21-24 cm beside its
+// chest and waist), where the other hand crossing to it reached at full stretch across the hips
+// (fists touching there 42.1 / 44.2 mm in the trunk and 18.1 / 17.0 mm short of the place, a flat
+// hand held off 12.9 mm). 4 cm off the silhouette (21.3 cm out): 22.8 / 20.4 mm, 0.2 / 0.1 mm
+// short, 0.2 mm (collision_test.cpp). Measured too: 5 cm 39.2 / 26.1 mm, 6 cm 32.9 / 33.6, 7 cm
+// 45.2 / 47.0 and 8 mm short (the depth is not monotonic in it: the arm's swivel and the thorax
+// turn change with the place), 8 cm 50.3 / 52.1.
+constexpr float kBesideLegsClearMax_m = 0.04f;
 constexpr std::array<const char*, 5> kArmPlaces = {"forearm", "forearm_back", "elbow", "upper_arm", "elbow_inside"};
 
 // Which body part a triangle belongs to, so a ray from inside the head cannot stop on a hand.
@@ -385,7 +395,8 @@ class AnchorBuilder {
     // silhouette keeps the place off it.
     const auto beside = [&](float sign, float w) {
       const float silhouette = surface_.slice_reach(o, up_, left_ * sign, regions | kCore);
-      return std::max(1.6f * w, silhouette + kBesideClear_m);
+      const float out = (regions & kLegs) ? std::min(1.6f * w, silhouette + kBesideLegsClearMax_m) : 1.6f * w;
+      return std::max(out, silhouette + kBesideClear_m);
     };
     const float bl = beside(1.0f, wl), br = beside(-1.0f, wr);
     add(base + "right_beside", j_right, o - left_ * br + forward_ * (0.5f * centre.distance), forward_);

@@ -364,6 +364,95 @@ KindDepths depths_by_kind(const SynthContext& ctx, const glm::quat* frames, int 
   return d;
 }
 
+// The largest acceleration an arm joint (shoulder girdle, upper arm, elbow, wrist) may reach in a
+// transition, in m/s^2, measured as MotionSmoothness measures it: the second difference over a
+// 1/30 s window (kArmAccelWindowS), the transition's ends held before and after it as the clip
+// holds them. Hand accelerations in signing peak at a few tens of m/s^2; the smoothness tests
+// hold wrists and elbows to 50.4 m/s^2 (5.6 cm change of a 30 fps step), and 40 leaves a fifth
+// of that for the sign's own frames (swivel fixes ramped in). Eq. (10) sets a mean SPEED, and
+// the global speed factor divides every duration, so along the same path every acceleration
+// grows with its square: UNDERSTAND's raise to the forehead, whose elbow swings from behind the
+// arm to in front of it between two waypoints of the hand's path (31-35 m/s^2 at speed 1),
+// reached 50.4 / 53.0 m/s^2 (project avatar / reference) at 30 fps x 1.25. A faster signer still
+// has a human arm: where the states would accelerate an arm joint beyond this, k grows by the
+// square root of the excess (accelerations go as 1/duration^2 along the same path).
+constexpr float kArmPeakAccelMPerS2 = 40.0f;
+constexpr float kArmAccelWindowS = 1.0f / 30.0f;
+// A corner of an arm's path (where a chain's pieces meet: UNDERSTAND's and TEACH's elbows swing
+// 24 cm in one piece and 4 cm in the next, the cross-fade between them 0.09 s at speed 1.5) is
+// as narrow as a few states, and the window's second difference over the states sees it by
+// their phase: TEACH's lowering on the reference humanoid at 30 fps x 1.5 measured 56.5 m/s^2
+// at 15 states, 46.6 at 19, 43.0 at 21, 59.5 at 22. So a chain's states are measured again at
+// twice the density (the same 1/30 s window, the phases between the states too), and k
+// stretched again on the new states, up to kAccelRounds times.
+constexpr int kAccelRounds = 3;
+// The states alone measured below this share of kArmPeakAccelMPerS2 are not measured between them
+// (the phases the states missed raised TEACH's figure by at most 40%: 43.0 -> 59.5 m/s^2); each
+// such check poses twice the states, and every rest transition's hand path had it.
+constexpr float kAccelBetweenFrom = 0.7f;
+
+// The arm joints (shoulder, upper arm, forearm, hand of both arms) of a rig.
+std::vector<int> arm_joint_list(const Rig& rig) {
+  std::vector<int> out;
+  for (const ArmRig& a : rig.arms)
+    for (int j : {a.shoulder, a.upper, a.lower, a.hand})
+      if (j >= 0) out.push_back(j);
+  return out;
+}
+
+// kArmPeakAccelMPerS2's measure over positions pos[i * n + joint] of states 0..k (the two ends
+// included) sampled at fps.
+float arm_accel_of(const std::vector<glm::vec3>& pos, size_t n, int k, float fps) {
+  const int window = std::max(1, static_cast<int>(std::lround(kArmAccelWindowS * fps)));
+  const float window_s = static_cast<float>(window) / fps;
+  auto at = [&](int i, size_t j) { return pos[static_cast<size_t>(std::min(std::max(i, 0), k)) * n + j]; };
+  float worst = 0.0f;
+  for (int i = 1 - window; i < k + window; ++i)
+    for (size_t j = 0; j < n; ++j)
+      worst = std::max(worst, glm::length(at(i + window, j) - 2.0f * at(i, j) + at(i - window, j)));
+  return worst / (window_s * window_s);
+}
+
+// The same measure for k-1 states `frames` between `from` and `to` (each posed), at fps.
+float arm_accel(const Rig& rig, const glm::quat* from, const glm::quat* to, const std::vector<glm::quat>& frames, int k,
+                float fps) {
+  const int J = rig.joint_count;
+  const std::vector<int> arms = arm_joint_list(rig);
+  std::vector<glm::vec3> pos(static_cast<size_t>(k + 1) * arms.size());
+  PoseBuilder pb(rig);
+  for (int i = 0; i <= k; ++i) {
+    pb.set_from_local(i == 0 ? from : i == k ? to : &frames[static_cast<size_t>(i - 1) * J]);
+    for (size_t n = 0; n < arms.size(); ++n) pos[static_cast<size_t>(i) * arms.size() + n] = pb.position(arms[n]);
+  }
+  return arm_accel_of(pos, arms.size(), k, fps);
+}
+
+// kArmPeakAccelMPerS2's measure of a path at k states, the phases between them included: the
+// states sampled at 2k, the window twice as many of them (see kAccelRounds).
+template <typename Sampler>
+float arm_accel_between_states(const Rig& rig, const glm::quat* from, const glm::quat* to, Sampler sample, int k,
+                               float fps) {
+  std::vector<glm::quat> dense;
+  sample(2 * k, &dense);
+  return arm_accel(rig, from, to, dense, 2 * k, 2.0f * fps);
+}
+
+// Stretches k (re-sampling the states with `sample`) until no arm joint accelerates beyond
+// kArmPeakAccelMPerS2, up to kAccelRounds times; `chain`: a path with corners (waypoints), also
+// measured between the states.
+template <typename Sampler>
+void stretch_for_arm_accel(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, Sampler sample,
+                           bool chain, int* k, std::vector<glm::quat>* frames) {
+  for (int round = 0; round < kAccelRounds; ++round) {
+    float a = arm_accel(rig, from, to, *frames, *k, fps);
+    if (chain && a > kAccelBetweenFrom * kArmPeakAccelMPerS2)
+      a = std::max(a, arm_accel_between_states(rig, from, to, sample, *k, fps));
+    if (a <= kArmPeakAccelMPerS2) return;
+    *k = static_cast<int>(std::ceil(*k * std::sqrt(a / kArmPeakAccelMPerS2)));
+    sample(*k, frames);
+  }
+}
+
 // The longest distance any joint moves in one frame along from, frames (k-1 states), to.
 float max_joint_step(const Rig& rig, const glm::quat* from, const glm::quat* to, const std::vector<glm::quat>& frames,
                      int k) {
@@ -768,8 +857,11 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     for (int j : {a.shoulder, a.upper, a.lower, a.hand})
       if (j >= 0) arm_joints[static_cast<size_t>(j)] = true;
   // The fingers' (and fingertips') longest step a frame: kHandPathFingerPeakMPerS, scaled as
-  // eq. (10)'s k is (the global speed divides every duration).
-  const float finger_peak_m = kHandPathFingerPeakMPerS * speed / fps;
+  // eq. (10)'s k is (the global speed divides every duration) below speed 1, and not above it:
+  // a faster signer's hand is no faster than a human hand. Scaled by 1.25, the peak was
+  // 3.1 m/s and 605 of the lexicon's 846 sign-settings at speed 1.25 (both rigs, 25/30/60 fps)
+  // had a fingertip over the 3 m/s bound in a rest transition (up to 3.48 m/s, MAN's middle tip).
+  const float finger_peak_m = kHandPathFingerPeakMPerS * std::min(speed, 1.0f) / fps;
   TransitionPlan p;
   p.lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p.k = transition_states(p.lmax_m, fps, speed);
@@ -782,7 +874,12 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   // `abandon_step_m`: a step longer than this means the states are sampled again (more of
   // them) and this pass's depths are thrown away, so past it only the steps are measured.
   // `step_m`: the longest step of an arm joint; `finger_step_m`: of any other joint.
-  float finger_step_m = 0.0f;
+  // `accel_mps2`: the arm joints' largest acceleration (kArmPeakAccelMPerS2's measure),
+  // the transition's ends held before and after it as the clip holds them.
+  float finger_step_m = 0.0f, accel_mps2 = 0.0f;
+  const std::vector<int> arm_list = arm_joint_list(rig);
+  const size_t arms_n = arm_list.size();
+  std::vector<glm::vec3> arm_pos;
   auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
     std::vector<glm::vec3> prev(J), cur(J);
@@ -790,8 +887,10 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     finger_step_m = 0.0f;
     *d = KindDepths{};
     deepest.assign(static_cast<size_t>(std::max(0, p.k - 1)), PenetrationMemo::Result{});
+    arm_pos.resize(static_cast<size_t>(p.k + 1) * arms_n);
     for (int i = 0; i <= p.k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p.k ? to : &p.frames[static_cast<size_t>(i - 1) * J]);
+      for (size_t n = 0; n < arms_n; ++n) arm_pos[static_cast<size_t>(i) * arms_n + n] = pb.position(arm_list[n]);
       for (int j = 0; j < J; ++j) {
         cur[j] = pb.position(j);
         if (i == 0) continue;
@@ -820,6 +919,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
         }
       }
     }
+    accel_mps2 = arm_accel_of(arm_pos, arms_n, p.k, fps);
   };
   sample(p.k, &p.frames);
   p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
@@ -827,12 +927,23 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   KindDepths d;
   const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;  // plan_chain's rule
   measure(&step_m, &d, peak_step_m, finger_peak_m);
-  if (step_m > peak_step_m || finger_step_m > finger_peak_m) {
-    p.k = static_cast<int>(std::ceil(p.k * std::max(step_m / peak_step_m, finger_step_m / finger_peak_m)));
+  float stretch = std::max({step_m / peak_step_m, finger_step_m / finger_peak_m,
+                            std::sqrt(accel_mps2 / kArmPeakAccelMPerS2)});
+  // The step rules and the acceleration, on the states and between them, together; then the
+  // acceleration alone, measured again on the new states (kAccelRounds).
+  for (int round = 0; round < kAccelRounds; ++round) {
+    // The first round's states are stretched by the step rules anyway where they ask for more.
+    if ((round > 0 || stretch <= 1.0f) && accel_mps2 > kAccelBetweenFrom * kArmPeakAccelMPerS2) {
+      const float between = arm_accel_between_states(rig, from, to, sample, p.k, fps);
+      stretch = std::max(stretch, std::sqrt(between / kArmPeakAccelMPerS2));
+    }
+    if (stretch <= 1.0f) break;
+    p.k = static_cast<int>(std::ceil(p.k * stretch));
     if (!allow_longer && !direct->states_exceed(p.k)) return false;
     sample(p.k, &p.frames);
     p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
     measure(&step_m, &d, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
+    stretch = std::sqrt(accel_mps2 / kArmPeakAccelMPerS2);
   }
   p.via_points = kHandPathWaypoints;
   const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
@@ -914,6 +1025,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   plan.lmax_m = direct.length_m();  // transition_path_m
   plan.k = transition_states(plan.lmax_m, fps, speed);
   interpolate(from, to, {}, J, plan.k, &plan.frames);
+  auto sample_direct = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, {}, J, k, out); };
+  stretch_for_arm_accel(rig, from, to, fps, sample_direct, false, &plan.k, &plan.frames);
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
     for (int i = 1; i < k; ++i) {
@@ -1013,6 +1126,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     p.k = transition_states(p.lmax_m, fps, speed);
     p.via_points = static_cast<int>(vias.size());
     interpolate(from, to, vias, J, p.k, &p.frames);
+    auto sample_vias = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, vias, J, k, out); };
+    stretch_for_arm_accel(rig, from, to, fps, sample_vias, false, &p.k, &p.frames);
     p.exempt = exempt_for(p.k);
     const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);
@@ -1045,6 +1160,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
       sample(p.k, &p.frames);
     }
+    stretch_for_arm_accel(rig, from, to, fps, sample, true, &p.k, &p.frames);
     p.exempt = exempt_for(p.k);
     const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);

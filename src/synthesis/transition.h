@@ -10,6 +10,9 @@
 // the transition meets the holds of the signs. coef: docs/SYNTHESIS.md (30 states per metre).
 // L_max is measured along the path the interpolation makes the joints travel, not as the straight
 // distance between its ends (transition_path_m): coef is a speed along the hand's path.
+// k is then stretched where the states would accelerate an arm joint beyond a human 40 m/s^2
+// (transition.cpp kArmPeakAccelMPerS2): the speed factor divides every duration, and a faster
+// signer still has a human arm.
 // When a state would pass through the body or the other hand, a via-pose (the hand pulled away
 // from the body) is inserted and the path routed through it (the seed's remedy); when that still
 // cuts through, one or two waypoint poses with the wrists held in front of the trunk, the path a
