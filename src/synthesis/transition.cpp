@@ -400,6 +400,35 @@ std::vector<int> arm_joint_list(const Rig& rig) {
   return out;
 }
 
+// The fingertips accelerate at most this much in a transition's states. The arm joints' rule
+// left them out, and the hand turning on the way from the rest swung them beyond the hand's
+// 50.4 m/s^2 at speed 1.25 (TEACH and TEACHER's middle fingertip on the project avatar, 51.6
+// at 60 fps). 50, not the arm's 40: at speed 1 the lexicon's rest transitions keep their tips
+// within the bound (LOOK's 48.7 at 30 fps on the avatar, the highest) and keep their timing.
+constexpr float kFingertipPeakAccelMPerS2 = 50.0f;
+
+// The points kArmPeakAccelMPerS2's measure follows: the arm joints, then the fingertips (the
+// tip joints, or the distal bones where a rig has none). `scale`: each point's position scale,
+// so one bound reads both (the fingertips at kArmPeakAccelMPerS2 / kFingertipPeakAccelMPerS2:
+// a second difference scales with the positions).
+struct AccelPoints {
+  std::vector<int> joints;
+  std::vector<float> scale;
+};
+AccelPoints accel_point_list(const Rig& rig) {
+  AccelPoints out;
+  out.joints = arm_joint_list(rig);
+  out.scale.assign(out.joints.size(), 1.0f);
+  for (const ArmRig& a : rig.arms)
+    for (const FingerChain& finger : a.fingers) {
+      const int j = finger.tip >= 0 ? finger.tip : finger.bones[2];
+      if (j < 0) continue;
+      out.joints.push_back(j);
+      out.scale.push_back(kArmPeakAccelMPerS2 / kFingertipPeakAccelMPerS2);
+    }
+  return out;
+}
+
 // kArmPeakAccelMPerS2's measure over positions pos[i * n + joint] of states 0..k (the two ends
 // included) sampled at fps.
 float arm_accel_of(const std::vector<glm::vec3>& pos, size_t n, int k, float fps) {
@@ -417,14 +446,16 @@ float arm_accel_of(const std::vector<glm::vec3>& pos, size_t n, int k, float fps
 float arm_accel(const Rig& rig, const glm::quat* from, const glm::quat* to, const std::vector<glm::quat>& frames, int k,
                 float fps) {
   const int J = rig.joint_count;
-  const std::vector<int> arms = arm_joint_list(rig);
-  std::vector<glm::vec3> pos(static_cast<size_t>(k + 1) * arms.size());
+  const AccelPoints points = accel_point_list(rig);
+  const size_t n_points = points.joints.size();
+  std::vector<glm::vec3> pos(static_cast<size_t>(k + 1) * n_points);
   PoseBuilder pb(rig);
   for (int i = 0; i <= k; ++i) {
     pb.set_from_local(i == 0 ? from : i == k ? to : &frames[static_cast<size_t>(i - 1) * J]);
-    for (size_t n = 0; n < arms.size(); ++n) pos[static_cast<size_t>(i) * arms.size() + n] = pb.position(arms[n]);
+    for (size_t n = 0; n < n_points; ++n)
+      pos[static_cast<size_t>(i) * n_points + n] = points.scale[n] * pb.position(points.joints[n]);
   }
-  return arm_accel_of(pos, arms.size(), k, fps);
+  return arm_accel_of(pos, n_points, k, fps);
 }
 
 // kArmPeakAccelMPerS2's measure of a path at k states, the phases between them included: the
@@ -877,8 +908,8 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   // `accel_mps2`: the arm joints' largest acceleration (kArmPeakAccelMPerS2's measure),
   // the transition's ends held before and after it as the clip holds them.
   float finger_step_m = 0.0f, accel_mps2 = 0.0f;
-  const std::vector<int> arm_list = arm_joint_list(rig);
-  const size_t arms_n = arm_list.size();
+  const AccelPoints accel_points = accel_point_list(rig);
+  const size_t arms_n = accel_points.joints.size();
   std::vector<glm::vec3> arm_pos;
   auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
@@ -890,7 +921,8 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     arm_pos.resize(static_cast<size_t>(p.k + 1) * arms_n);
     for (int i = 0; i <= p.k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p.k ? to : &p.frames[static_cast<size_t>(i - 1) * J]);
-      for (size_t n = 0; n < arms_n; ++n) arm_pos[static_cast<size_t>(i) * arms_n + n] = pb.position(arm_list[n]);
+      for (size_t n = 0; n < arms_n; ++n)
+        arm_pos[static_cast<size_t>(i) * arms_n + n] = accel_points.scale[n] * pb.position(accel_points.joints[n]);
       for (int j = 0; j < J; ++j) {
         cur[j] = pb.position(j);
         if (i == 0) continue;
