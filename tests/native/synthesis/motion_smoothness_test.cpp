@@ -485,7 +485,9 @@ TEST_P(MotionSmoothness, EveryLexiconSignMovesHumanlyAndKeepsItsArmsOutAtEveryFr
   // change of a 30 fps step). Before the hand path's fingertip peak stopped scaling with the
   // speed factor above 1 (transition.cpp kHandPathFingerPeakMPerS: 2.5 m/s x 1.25), 605 of the
   // 846 sign-settings at speed 1.25 had a fingertip over 3 m/s in a rest transition (MAN 3.48
-  // m/s); now none (worst 2.96 m/s, IMPORTANT's sign on the reference at 25 fps x 1.25). Their
+  // m/s); now none (worst 2.96 m/s, IMPORTANT's sign on the reference at 25 fps x 1.25; 2.74
+  // since the signs' steps are stretched above speed 1, WE and WOMAN's rest transitions on the
+  // avatar). Their
   // accelerations at speeds 0.8 and 1 keep to 50.4 m/s^2 but for TEACHER on the reference (its
   // arm above); at 1.25 the speed factor's square on the signs' own movements and on the
   // transitions' hands (the transitions' acceleration rule counts the arm joints) takes a few
