@@ -968,9 +968,10 @@ struct StepSpan {
 // The sign's frames with step i (in the order played) at step_states[i] states where that is
 // more than the speed factor gives it (0 or missing: as the speed factor gives); each played
 // step's span into `spans`.
-bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignSpec& sign, const std::string& where,
-                                  const std::vector<int>& step_states, SignMotion* out,
-                                  std::vector<SynthesisError>* errors, std::vector<StepSpan>* spans) {
+bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignSpec& sign,
+                                  const std::string& where, const std::vector<int>& step_states,
+                                  SignMotion* out, std::vector<SynthesisError>* errors,
+                                  std::vector<StepSpan>* spans) {
   const Rig& rig = ctx.rig;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   Solver solver(ctx, errors, where);
@@ -1365,7 +1366,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       int n = std::max(2, static_cast<int>(std::lround(duration * fps / speed)));
       const size_t played = spans->size();
       if (played < step_states.size()) n = std::max(n, step_states[played]);
-      spans->push_back({frames.size(), 0, n, std::max(2, static_cast<int>(std::lround(duration * fps)))});
+      spans->push_back(
+          {frames.size(), 0, n, std::max(2, static_cast<int>(std::lround(duration * fps)))});
       std::array<HandState, 2> last = from;
       for (int f = 1; f <= n; ++f) {
         float s = minimum_jerk(static_cast<float>(f) / n);
@@ -1841,8 +1843,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
 struct StepPeaks {
   float speed = 0.0f, accel = 0.0f;
 };
-std::vector<StepPeaks> step_peaks(const Rig& rig, const SignMotion& m, const std::vector<StepSpan>& spans,
-                                    float fps) {
+std::vector<StepPeaks> step_peaks(const Rig& rig, const SignMotion& m,
+                                  const std::vector<StepSpan>& spans, float fps) {
   const int window = std::max(1, static_cast<int>(std::lround(kStepHandAccelWindowS * fps)));
   const float window_s = static_cast<float>(window) / fps;
   const int J = rig.joint_count, last = m.frame_count - 1;
@@ -1859,14 +1861,17 @@ std::vector<StepPeaks> step_peaks(const Rig& rig, const SignMotion& m, const std
       for (int finger = 0; finger < 5; ++finger) *p++ = pb.tip(s, finger);
     }
   }
-  auto at = [&](int f, int k) { return pos[static_cast<size_t>(std::min(std::max(f, 0), last)) * kPoints + k]; };
+  auto at = [&](int f, int k) {
+    return pos[static_cast<size_t>(std::min(std::max(f, 0), last)) * kPoints + k];
+  };
   std::vector<StepPeaks> out;
   for (const StepSpan& span : spans) {
     float step = 0.0f, change = 0.0f;
     for (int f = static_cast<int>(span.begin) - window; f <= static_cast<int>(span.end); ++f)
       for (int k = 0; k < kPoints; ++k) {
         step = std::max(step, glm::length(at(f + window, k) - at(f, k)));
-        change = std::max(change, glm::length(at(f + window, k) - 2.0f * at(f, k) + at(f - window, k)));
+        change =
+            std::max(change, glm::length(at(f + window, k) - 2.0f * at(f, k) + at(f - window, k)));
       }
     out.push_back({step / window_s, change / (window_s * window_s)});
   }
@@ -1890,7 +1895,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (!(ctx.options.speed > 1.0f) || spans.empty()) return true;
   // The worst of a clip's steps' excesses over the bounds (1: at a bound).
   auto excess_of = [](const StepPeaks& p) {
-    return std::max(std::sqrt(p.accel / kStepHandPeakAccelMPerS2), p.speed / kStepHandPeakSpeedMPerS);
+    return std::max(std::sqrt(p.accel / kStepHandPeakAccelMPerS2),
+                    p.speed / kStepHandPeakSpeedMPerS);
   };
   auto worst_excess = [&](const std::vector<StepPeaks>& peaks) {
     float worst = 0.0f;
@@ -1904,7 +1910,8 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     for (size_t i = 0; i < spans.size(); ++i) {
       const float excess = excess_of(peaks[i]);
       if (excess <= 1.0f || spans[i].states >= spans[i].states_at_speed_1) continue;
-      states[i] = std::min(spans[i].states_at_speed_1, static_cast<int>(std::ceil(spans[i].states * excess)));
+      states[i] = std::min(spans[i].states_at_speed_1,
+                           static_cast<int>(std::ceil(spans[i].states * excess)));
       stretched = true;
     }
     if (!stretched) return true;

@@ -966,7 +966,8 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     for (int i = 0; i <= p.k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p.k ? to : &p.frames[static_cast<size_t>(i - 1) * J]);
       for (size_t n = 0; n < arms_n; ++n)
-        arm_pos[static_cast<size_t>(i) * arms_n + n] = accel_points.scale[n] * pb.position(accel_points.joints[n]);
+        arm_pos[static_cast<size_t>(i) * arms_n + n] =
+            accel_points.scale[n] * pb.position(accel_points.joints[n]);
       for (int j = 0; j < J; ++j) {
         cur[j] = pb.position(j);
         if (i == 0) continue;

@@ -649,9 +649,10 @@ TEST_P(MotionSmoothness, ASignsOwnMovementKeepsTheHandWithinHumanAccelerationAtA
       if (seg.kind == ClipSegment::Kind::Sign) return seg.end_s - seg.start_s;
     return 0.0;
   };
-  const PhraseText please =
-      phrase_from_text("R(H(flat), E(u), P(i), Loc(chest, centre, touch), C(palm), M(circle, axis=o, cw))", {});
-  const PhraseText push = phrase_from_text("R(H(flat), E(u), P(o), Loc(chest, centre), M(straight, o, small))", {});
+  const PhraseText please = phrase_from_text(
+      "R(H(flat), E(u), P(i), Loc(chest, centre, touch), C(palm), M(circle, axis=o, cw))", {});
+  const PhraseText push =
+      phrase_from_text("R(H(flat), E(u), P(o), Loc(chest, centre), M(straight, o, small))", {});
   ASSERT_TRUE(please.ok() && push.ok());
   for (float fps : {30.0f, 60.0f}) {
     SynthesisOptions o;
@@ -661,7 +662,8 @@ TEST_P(MotionSmoothness, ASignsOwnMovementKeepsTheHandWithinHumanAccelerationAtA
     SynthesisResult faster = synth.phrase(please.items, o);
     ASSERT_TRUE(at_1.ok() && faster.ok());
     const PhysicalWorst tips = measure_physical(rig_, faster.clip, true);
-    EXPECT_LE(tips.accel, kMaxAccelMPerS2) << "PLEASE at " << fps << " fps x 1.25: " << tips.accel_what;
+    EXPECT_LE(tips.accel, kMaxAccelMPerS2)
+        << "PLEASE at " << fps << " fps x 1.25: " << tips.accel_what;
     EXPECT_LE(sign_s(faster.clip), sign_s(at_1.clip) + 1e-6) << "PLEASE at " << fps << " fps";
     o.speed = 1.0f;
     at_1 = synth.phrase(push.items, o);
@@ -669,7 +671,8 @@ TEST_P(MotionSmoothness, ASignsOwnMovementKeepsTheHandWithinHumanAccelerationAtA
     faster = synth.phrase(push.items, o);
     ASSERT_TRUE(at_1.ok() && faster.ok());
     EXPECT_LE(measure_physical(rig_, faster.clip, true).accel, 45.0f);
-    EXPECT_NEAR(sign_s(faster.clip), sign_s(at_1.clip) / 1.25, 2.0 / fps) << "a push at " << fps << " fps";
+    EXPECT_NEAR(sign_s(faster.clip), sign_s(at_1.clip) / 1.25, 2.0 / fps)
+        << "a push at " << fps << " fps";
   }
 }
 
@@ -681,7 +684,8 @@ TEST_P(MotionSmoothness, RestTransitionsKeepTheFingertipsWithinHumanAcceleration
   Synthesizer synth(avatar_);
   ASSERT_TRUE(synth.ok()) << synth.error();
   const PhraseText teach = phrase_from_text(
-      "R(H(pinchall, bent), E(u), P(o), Loc(forehead, right_beside, close), M(straight, o, small), Rep(fromstart, 1)) "
+      "R(H(pinchall, bent), E(u), P(o), Loc(forehead, right_beside, close), M(straight, o, small), "
+      "Rep(fromstart, 1)) "
       "Sym(lr)",
       {});
   ASSERT_TRUE(teach.ok());
@@ -692,7 +696,8 @@ TEST_P(MotionSmoothness, RestTransitionsKeepTheFingertipsWithinHumanAcceleration
     SynthesisResult r = synth.phrase(teach.items, o);
     ASSERT_TRUE(r.ok());
     const PhysicalWorst tips = measure_physical(rig_, r.clip, true);
-    EXPECT_LE(tips.accel, kMaxAccelMPerS2) << "TEACH at " << fps << " fps x 1.25: " << tips.accel_what;
+    EXPECT_LE(tips.accel, kMaxAccelMPerS2)
+        << "TEACH at " << fps << " fps x 1.25: " << tips.accel_what;
   }
 }
 
