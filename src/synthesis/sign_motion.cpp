@@ -133,6 +133,25 @@ ArmTarget held_state_target(const HandState& h, const glm::vec3& point) {
 constexpr float kAmbiguousTurnRad = 2.618f;
 constexpr float kMeanHandTurnRadPerS = 5.0f;
 
+// Above speed 1 a step's wrists, elbows and fingertips accelerate at most this much in the solved
+// clip (over kStepHandAccelWindowS, as the smoothness tests measure; synthesize_sign_motion
+// stretches the step). The tests' bound is 50.4 m/s^2 (5.6 cm change of a 30 fps step); this is
+// measured on the solved frames themselves (the transitions' 40, kArmPeakAccelMPerS2, plans
+// states before the clip is blended), so a tenth is left, for the joins with the transitions.
+// The signs' steps took the speed factor as a divisor of every duration: at 1.25 every
+// acceleration was 1.56 times its speed-1 figure (PLEASE's circle on the chest, reference:
+// 46.4 m/s^2 at 30 fps x 1, 65.0 at 60 fps x 1.25; LOOK's V hand on the avatar 53.1).
+constexpr float kStepHandPeakAccelMPerS2 = 45.0f;
+constexpr float kStepHandAccelWindowS = 1.0f / 30.0f;
+// And their speed (the tests' bound 3 m/s; a tenth left as above). TEACHER's move from the
+// temples down to the shoulders (reference humanoid, 60 fps x 1.25) took its left elbow to 3.15.
+constexpr float kStepHandPeakSpeedMPerS = 2.7f;
+// A step's acceleration is not exactly 1/duration^2 in the solved clip (the window's phase over
+// the frames, the clamped wrist's corners, the wrist-rate rules that still scale with the speed
+// factor): up to this many stretches, each taken only when it measures better (PLEASE on the
+// reference at 60 fps x 1.25: 65.0, 45.5, then 50.2 m/s^2 at one more state).
+constexpr int kStepAccelRounds = 3;
+
 HandState mix_state(const HandState& a, const HandState& b, float s) {
   HandState o;
   o.target = a.target + s * (b.target - a.target);
@@ -495,8 +514,10 @@ struct Solver {
       // fingertips at 65-67 m/s^2 at 30-60 fps x 1.25 (bounds 52 and 63) and the reference
       // humanoid's elbow at 78 m/s^2 (59).
       else if (spec.location.kind == Location::Kind::Body && !is_touch(spec.location.contact) &&
-               spec.location.contact != Contact::ArmExtended && !far_side_place(plan, spec.location) &&
-               spec.location.side != notation::Side::RightBeside && spec.location.side != notation::Side::LeftBeside &&
+               spec.location.contact != Contact::ArmExtended &&
+               !far_side_place(plan, spec.location) &&
+               spec.location.side != notation::Side::RightBeside &&
+               spec.location.side != notation::Side::LeftBeside &&
                best.orientation_error_rad > kBandSearchAboveRad) {
         const glm::vec3 written = st.target;
         const glm::vec3 n = glm::normalize(anchor.normal);
@@ -505,8 +526,8 @@ struct Solver {
         fixed.auto_swivel = false;
         fixed.swivel_rad = best.swivel_rad;
         auto cost = [&](const ArmPose& p, glm::vec3 target) {
-          return 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(target - written) +
-                 p.body_cost;
+          return 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m +
+                 1.5f * glm::length(target - written) + p.body_cost;
         };
         const float original_cost = cost(best, written);
         float best_cost = original_cost;
@@ -514,7 +535,8 @@ struct Solver {
         for (float distance : {0.05f, 0.07f, 0.09f})
           for (float up : {-0.8f, -0.4f, 0.0f, 0.4f, 0.8f})
             for (float out : {-0.4f, 0.0f, 0.4f, 0.8f}) {
-              fixed.point = anchor.point + distance * glm::normalize(n + up * rig.up + out * outward);
+              fixed.point =
+                  anchor.point + distance * glm::normalize(n + up * rig.up + out * outward);
               const ArmPose p = solve_arm(rig, plan.side, fixed);
               const float c = cost(p, fixed.point);
               if (c < best_cost) {
@@ -994,9 +1016,21 @@ bool make_context(const avatar::Avatar& avatar, const SynthesisOptions& options,
   return true;
 }
 
-bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
-                            const std::string& where, SignMotion* out,
-                            std::vector<SynthesisError>* errors) {
+namespace {
+
+// A played step's frames in the sign's clip: [begin, end), its states n and its states at speed 1.
+struct StepSpan {
+  size_t begin = 0, end = 0;
+  int states = 0, states_at_speed_1 = 0;
+};
+
+// The sign's frames with step i (in the order played) at step_states[i] states where that is
+// more than the speed factor gives it (0 or missing: as the speed factor gives); each played
+// step's span into `spans`.
+bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignSpec& sign,
+                                  const std::string& where, const std::vector<int>& step_states,
+                                  SignMotion* out, std::vector<SynthesisError>* errors,
+                                  std::vector<StepSpan>* spans) {
   const Rig& rig = ctx.rig;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   Solver solver(ctx, errors, where);
@@ -1389,6 +1423,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         duration = std::max(duration, turn / kMeanHandTurnRadPerS);
       }
       int n = std::max(2, static_cast<int>(std::lround(duration * fps / speed)));
+      const size_t played = spans->size();
+      if (played < step_states.size()) n = std::max(n, step_states[played]);
+      spans->push_back(
+          {frames.size(), 0, n, std::max(2, static_cast<int>(std::lround(duration * fps)))});
       std::array<HandState, 2> last = from;
       for (int f = 1; f <= n; ++f) {
         float s = minimum_jerk(static_cast<float>(f) / n);
@@ -1460,6 +1498,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         frames.push_back(ft);
         last = ft.hand;
       }
+      spans->back().end = frames.size();
       state = last;
       if (hold > 0.0f) add_hold(hold);
     }
@@ -1854,6 +1893,101 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (solver.turn.active())
     for (int f = 0; f < out->frame_count; ++f)
       apply_thorax_turn(rig, solver.turn, &out->rotations[static_cast<size_t>(f) * J]);
+  return true;
+}
+
+// The peak speed (m/s) and acceleration (m/s^2) of each step's wrists, elbows and fingertips in
+// the solved clip, over kStepHandAccelWindowS: the first and second differences of the posed
+// points, the window's frames before the step and after it (the clip's last frame held) included.
+struct StepPeaks {
+  float speed = 0.0f, accel = 0.0f;
+};
+std::vector<StepPeaks> step_peaks(const Rig& rig, const SignMotion& m,
+                                  const std::vector<StepSpan>& spans, float fps) {
+  const int window = std::max(1, static_cast<int>(std::lround(kStepHandAccelWindowS * fps)));
+  const float window_s = static_cast<float>(window) / fps;
+  const int J = rig.joint_count, last = m.frame_count - 1;
+  // Each frame's points, posed once (steps' windows overlap).
+  constexpr int kPoints = 2 * 7;  // per side: wrist, elbow, five fingertips
+  std::vector<glm::vec3> pos(static_cast<size_t>(m.frame_count) * kPoints);
+  PoseBuilder pb(rig);
+  for (int f = 0; f < m.frame_count; ++f) {
+    pb.set_from_local(&m.rotations[static_cast<size_t>(f) * J]);
+    glm::vec3* p = &pos[static_cast<size_t>(f) * kPoints];
+    for (Side s : {kLeft, kRight}) {
+      *p++ = pb.position(rig.arms[s].hand);
+      *p++ = pb.position(rig.arms[s].lower);
+      for (int finger = 0; finger < 5; ++finger) *p++ = pb.tip(s, finger);
+    }
+  }
+  auto at = [&](int f, int k) {
+    return pos[static_cast<size_t>(std::min(std::max(f, 0), last)) * kPoints + k];
+  };
+  std::vector<StepPeaks> out;
+  for (const StepSpan& span : spans) {
+    float step = 0.0f, change = 0.0f;
+    for (int f = static_cast<int>(span.begin) - window; f <= static_cast<int>(span.end); ++f)
+      for (int k = 0; k < kPoints; ++k) {
+        step = std::max(step, glm::length(at(f + window, k) - at(f, k)));
+        change =
+            std::max(change, glm::length(at(f + window, k) - 2.0f * at(f, k) + at(f - window, k)));
+      }
+    out.push_back({step / window_s, change / (window_s * window_s)});
+  }
+  return out;
+}
+
+}  // namespace
+
+bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
+                            const std::string& where, SignMotion* out,
+                            std::vector<SynthesisError>* errors) {
+  std::vector<StepSpan> spans;
+  if (!synthesize_sign_motion_timed(ctx, sign, where, {}, out, errors, &spans)) return false;
+  // A faster signer still has a human hand: the speed factor divides a step's time, so along
+  // the same path its speeds grow with the factor and its accelerations with its square. Above
+  // speed 1, a step whose wrist, elbow or a fingertip moves faster than kStepHandPeakSpeedMPerS
+  // or accelerates beyond kStepHandPeakAccelMPerS2 in the solved clip gets more states (by the
+  // speed's excess or the square root of the acceleration's: accelerations go as 1/duration^2),
+  // never more than it has at speed 1, and the sign is synthesised again with them. A step within
+  // bounds keeps its timing, and speeds up to 1 are untouched (no second solve).
+  if (!(ctx.options.speed > 1.0f) || spans.empty()) return true;
+  // The worst of a clip's steps' excesses over the bounds (1: at a bound).
+  auto excess_of = [](const StepPeaks& p) {
+    return std::max(std::sqrt(p.accel / kStepHandPeakAccelMPerS2),
+                    p.speed / kStepHandPeakSpeedMPerS);
+  };
+  auto worst_excess = [&](const std::vector<StepPeaks>& peaks) {
+    float worst = 0.0f;
+    for (const StepPeaks& p : peaks) worst = std::max(worst, excess_of(p));
+    return worst;
+  };
+  std::vector<StepPeaks> peaks = step_peaks(ctx.rig, *out, spans, ctx.options.fps);
+  std::vector<int> states(spans.size(), 0);
+  for (int round = 0; round < kStepAccelRounds; ++round) {
+    bool stretched = false;
+    for (size_t i = 0; i < spans.size(); ++i) {
+      const float excess = excess_of(peaks[i]);
+      if (excess <= 1.0f || spans[i].states >= spans[i].states_at_speed_1) continue;
+      states[i] = std::min(spans[i].states_at_speed_1,
+                           static_cast<int>(std::ceil(spans[i].states * excess)));
+      stretched = true;
+    }
+    if (!stretched) return true;
+    // The same sign, the same key pose: the second solve's errors repeat the first's.
+    SignMotion slower;
+    std::vector<SynthesisError> repeated;
+    std::vector<StepSpan> again;
+    if (!synthesize_sign_motion_timed(ctx, sign, where, states, &slower, &repeated, &again) ||
+        again.size() != spans.size())
+      return true;
+    // Not exactly 1/duration^2 (above): a stretch that measures no better is not taken.
+    std::vector<StepPeaks> slower_peaks = step_peaks(ctx.rig, slower, again, ctx.options.fps);
+    if (worst_excess(slower_peaks) >= worst_excess(peaks)) return true;
+    *out = std::move(slower);
+    spans = std::move(again);
+    peaks = std::move(slower_peaks);
+  }
   return true;
 }
 

@@ -400,6 +400,35 @@ std::vector<int> arm_joint_list(const Rig& rig) {
   return out;
 }
 
+// The fingertips accelerate at most this much in a transition's states. The arm joints' rule
+// left them out, and the hand turning on the way from the rest swung them beyond the hand's
+// 50.4 m/s^2 at speed 1.25 (TEACH and TEACHER's middle fingertip on the project avatar, 51.6
+// at 60 fps). 50, not the arm's 40: at speed 1 the lexicon's rest transitions keep their tips
+// within the bound (LOOK's 48.7 at 30 fps on the avatar, the highest) and keep their timing.
+constexpr float kFingertipPeakAccelMPerS2 = 50.0f;
+
+// The points kArmPeakAccelMPerS2's measure follows: the arm joints, then the fingertips (the
+// tip joints, or the distal bones where a rig has none). `scale`: each point's position scale,
+// so one bound reads both (the fingertips at kArmPeakAccelMPerS2 / kFingertipPeakAccelMPerS2:
+// a second difference scales with the positions).
+struct AccelPoints {
+  std::vector<int> joints;
+  std::vector<float> scale;
+};
+AccelPoints accel_point_list(const Rig& rig) {
+  AccelPoints out;
+  out.joints = arm_joint_list(rig);
+  out.scale.assign(out.joints.size(), 1.0f);
+  for (const ArmRig& a : rig.arms)
+    for (const FingerChain& finger : a.fingers) {
+      const int j = finger.tip >= 0 ? finger.tip : finger.bones[2];
+      if (j < 0) continue;
+      out.joints.push_back(j);
+      out.scale.push_back(kArmPeakAccelMPerS2 / kFingertipPeakAccelMPerS2);
+    }
+  return out;
+}
+
 // kArmPeakAccelMPerS2's measure over positions pos[i * n + joint] of states 0..k (the two ends
 // included) sampled at fps.
 float arm_accel_of(const std::vector<glm::vec3>& pos, size_t n, int k, float fps) {
@@ -417,14 +446,16 @@ float arm_accel_of(const std::vector<glm::vec3>& pos, size_t n, int k, float fps
 float arm_accel(const Rig& rig, const glm::quat* from, const glm::quat* to, const std::vector<glm::quat>& frames, int k,
                 float fps) {
   const int J = rig.joint_count;
-  const std::vector<int> arms = arm_joint_list(rig);
-  std::vector<glm::vec3> pos(static_cast<size_t>(k + 1) * arms.size());
+  const AccelPoints points = accel_point_list(rig);
+  const size_t n_points = points.joints.size();
+  std::vector<glm::vec3> pos(static_cast<size_t>(k + 1) * n_points);
   PoseBuilder pb(rig);
   for (int i = 0; i <= k; ++i) {
     pb.set_from_local(i == 0 ? from : i == k ? to : &frames[static_cast<size_t>(i - 1) * J]);
-    for (size_t n = 0; n < arms.size(); ++n) pos[static_cast<size_t>(i) * arms.size() + n] = pb.position(arms[n]);
+    for (size_t n = 0; n < n_points; ++n)
+      pos[static_cast<size_t>(i) * n_points + n] = points.scale[n] * pb.position(points.joints[n]);
   }
-  return arm_accel_of(pos, arms.size(), k, fps);
+  return arm_accel_of(pos, n_points, k, fps);
 }
 
 // kArmPeakAccelMPerS2's measure of a path at k states, the phases between them included: the
@@ -664,6 +695,50 @@ constexpr int kHandPathWaypoints = 3;
 // project avatar, 2.5 m/s 0.73 s, 2.8 m/s 0.63 s with a fingertip at 98.6 mm a frame (WOMAN).
 constexpr float kHandPathFingerPeakMPerS = 2.5f;
 
+// A rest transition that does not take the hand's path (plan_hand_path: not shorter, or not clear
+// of the body at any try) is timed as the hand's path is: eq. (10)'s L_max the arm joints' path
+// (coef's 1 m/s is a hand speed), states added where an arm joint outruns the minimum-jerk peak
+// (1.875 times the mean, plan_chain's rule) or a finger or fingertip kHandPathFingerPeakMPerS,
+// then stretched until no arm joint accelerates beyond kArmPeakAccelMPerS2. Timed by its
+// fingertips' path instead (the longest joint path, the index tip swinging up from hanging), the
+// direct path and the via-poses took 1.2-1.4 s where the hand's path takes 0.7-0.9 (DAY's hands
+// leaving each other for the rest: 1.43 s on the reference humanoid), and the far side's routed
+// pointing touches 3.6-3.8 s. `chain`: a path with corners (stretch_for_arm_accel).
+template <typename Sampler>
+void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, float speed,
+                           Sampler sample, bool chain, TransitionPlan* p) {
+  const int J = rig.joint_count;
+  std::vector<bool> arm_joints(static_cast<size_t>(J), false);
+  for (int j : arm_joint_list(rig)) arm_joints[static_cast<size_t>(j)] = true;
+  p->lmax_m = path_length(rig, from, to, sample, &arm_joints);
+  p->k = transition_states(p->lmax_m, fps, speed);
+  sample(p->k, &p->frames);
+  // The longest step a frame of an arm joint and of any other joint (fingers, fingertips).
+  float arm_step_m = 0.0f, finger_step_m = 0.0f;
+  {
+    PoseBuilder pb(rig);
+    std::vector<glm::vec3> prev(J), cur(J);
+    for (int i = 0; i <= p->k; ++i) {
+      pb.set_from_local(i == 0 ? from : i == p->k ? to : &p->frames[static_cast<size_t>(i - 1) * J]);
+      for (int j = 0; j < J; ++j) {
+        cur[j] = pb.position(j);
+        if (i == 0) continue;
+        float& longest = arm_joints[static_cast<size_t>(j)] ? arm_step_m : finger_step_m;
+        longest = std::max(longest, glm::length(cur[j] - prev[j]));
+      }
+      std::swap(prev, cur);
+    }
+  }
+  const float peak_step_m = 1.875f * p->lmax_m / p->k * 1.1f;
+  const float finger_peak_m = kHandPathFingerPeakMPerS * std::min(speed, 1.0f) / fps;
+  const float stretch = std::max(arm_step_m / peak_step_m, finger_step_m / finger_peak_m);
+  if (stretch > 1.0f) {
+    p->k = static_cast<int>(std::ceil(p->k * stretch));
+    sample(p->k, &p->frames);
+  }
+  stretch_for_arm_accel(rig, from, to, fps, sample, chain, &p->k, &p->frames);
+}
+
 // interpolate_chain's path through the hand-path waypoints, computed for what differs: the
 // waypoints differ from the direct slerp only in the arm joints (shoulder, upper arm, forearm,
 // hand), so every other joint's pieces lie on its one slerp arc from `from` to `to`, and a piece
@@ -877,8 +952,8 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   // `accel_mps2`: the arm joints' largest acceleration (kArmPeakAccelMPerS2's measure),
   // the transition's ends held before and after it as the clip holds them.
   float finger_step_m = 0.0f, accel_mps2 = 0.0f;
-  const std::vector<int> arm_list = arm_joint_list(rig);
-  const size_t arms_n = arm_list.size();
+  const AccelPoints accel_points = accel_point_list(rig);
+  const size_t arms_n = accel_points.joints.size();
   std::vector<glm::vec3> arm_pos;
   auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
@@ -890,7 +965,9 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     arm_pos.resize(static_cast<size_t>(p.k + 1) * arms_n);
     for (int i = 0; i <= p.k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p.k ? to : &p.frames[static_cast<size_t>(i - 1) * J]);
-      for (size_t n = 0; n < arms_n; ++n) arm_pos[static_cast<size_t>(i) * arms_n + n] = pb.position(arm_list[n]);
+      for (size_t n = 0; n < arms_n; ++n)
+        arm_pos[static_cast<size_t>(i) * arms_n + n] =
+            accel_points.scale[n] * pb.position(accel_points.joints[n]);
       for (int j = 0; j < J; ++j) {
         cur[j] = pb.position(j);
         if (i == 0) continue;
@@ -1022,11 +1099,17 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, false, &hand_try, &hand_path))
       return hand_path;
   }
-  plan.lmax_m = direct.length_m();  // transition_path_m
-  plan.k = transition_states(plan.lmax_m, fps, speed);
-  interpolate(from, to, {}, J, plan.k, &plan.frames);
   auto sample_direct = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, {}, J, k, out); };
-  stretch_for_arm_accel(rig, from, to, fps, sample_direct, false, &plan.k, &plan.frames);
+  // A rest transition's direct path and via-poses (below) are timed by the arm, as its hand's
+  // path is (time_rest_path_by_arm); every other transition by eq. (10) over all joints.
+  if (hand_path_tried) {
+    time_rest_path_by_arm(rig, from, to, fps, speed, sample_direct, false, &plan);
+  } else {
+    plan.lmax_m = direct.length_m();  // transition_path_m
+    plan.k = transition_states(plan.lmax_m, fps, speed);
+    interpolate(from, to, {}, J, plan.k, &plan.frames);
+    stretch_for_arm_accel(rig, from, to, fps, sample_direct, false, &plan.k, &plan.frames);
+  }
   auto exempt_for = [&](int k) {
     std::vector<std::uint8_t> ex(std::max(0, k - 1), 0);
     for (int i = 1; i < k; ++i) {
@@ -1120,14 +1203,16 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   auto plan_with = [&](const std::vector<Via>& vias) {
     std::pair<TransitionPlan, float> out;
     TransitionPlan& p = out.first;
-    p.lmax_m = path_length(rig, from, to, [&](int k, std::vector<glm::quat>* out) {
-      interpolate(from, to, vias, J, k, out);
-    });  // eq. (10) along the routed path
-    p.k = transition_states(p.lmax_m, fps, speed);
-    p.via_points = static_cast<int>(vias.size());
-    interpolate(from, to, vias, J, p.k, &p.frames);
     auto sample_vias = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, vias, J, k, out); };
-    stretch_for_arm_accel(rig, from, to, fps, sample_vias, false, &p.k, &p.frames);
+    p.via_points = static_cast<int>(vias.size());
+    if (hand_path_tried) {
+      time_rest_path_by_arm(rig, from, to, fps, speed, sample_vias, false, &p);
+    } else {
+      p.lmax_m = path_length(rig, from, to, sample_vias);  // eq. (10) along the routed path
+      p.k = transition_states(p.lmax_m, fps, speed);
+      interpolate(from, to, vias, J, p.k, &p.frames);
+      stretch_for_arm_accel(rig, from, to, fps, sample_vias, false, &p.k, &p.frames);
+    }
     p.exempt = exempt_for(p.k);
     const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);
@@ -1145,9 +1230,17 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     std::pair<TransitionPlan, float> result;
     TransitionPlan& p = result.first;
     auto sample = [&](int k, std::vector<glm::quat>* out) { interpolate_chain(rig, from, to, waypoints, k, out); };
+    p.via_points = static_cast<int>(vias.size());
+    if (hand_path_tried) {
+      time_rest_path_by_arm(rig, from, to, fps, speed, sample, true, &p);
+      p.exempt = exempt_for(p.k);
+      const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+      p.max_penetration_m = std::max(d.hand_m, d.arm_m);
+      result.second = excess_of(d);
+      return result;
+    }
     p.lmax_m = path_length(rig, from, to, sample);  // eq. (10) along the routed path
     p.k = transition_states(p.lmax_m, fps, speed);
-    p.via_points = static_cast<int>(vias.size());
     sample(p.k, &p.frames);
     // Eq. (10) sets the mean speed; a single minimum-jerk profile peaks at 1.875 times it. The
     // pieces share that profile by the path of the joint that travels furthest overall, so a

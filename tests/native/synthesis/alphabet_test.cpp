@@ -104,7 +104,8 @@ TEST(SynthesisAlphabetOrientation, EveryLetterAndDigitHoldsItsPalmWithin10Degree
   for (const char* file : {"ase/alphabet", "ase/digits", "ukl/alphabet"}) {
     std::string text;
     std::vector<AlphabetEntry> entries;
-    if (!testing::read_text_file(kRoot + "/data/" + file + ".jsonl", &text)) GTEST_SKIP() << "no data " << file;
+    if (!testing::read_text_file(kRoot + "/data/" + file + ".jsonl", &text))
+      GTEST_SKIP() << "no data " << file;
     ASSERT_TRUE(parse_alphabet_jsonl(text, &entries, &error)) << error;
     for (const auto& rg : rigs) {
       Rig rig;
@@ -119,17 +120,20 @@ TEST(SynthesisAlphabetOrientation, EveryLetterAndDigitHoldsItsPalmWithin10Degree
         SynthesisResult r = synth.sign(sign, SynthesisOptions{});
         ASSERT_TRUE(r.ok()) << e.letter << ": " << r.errors[0].message;
         PoseBuilder pose = testing::frame_pose(rig, r.clip, testing::first_sign_frame(r.clip));
-        const HandFrame requested = orientation_frame(rig, sign.dominant.orientation, kRight, false);
+        const HandFrame requested =
+            orientation_frame(rig, sign.dominant.orientation, kRight, false);
         const HandFrame posed = posed_hand_frame(rig, kRight, pose.delta(rig.arms[kRight].hand));
-        const float palm_deg = testing::deg(std::acos(std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f)));
+        const float cos_palm = std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f);
+        const float palm_deg = testing::deg(std::acos(cos_palm));
         const std::string key = std::string(file) + " " + rg.first + " " + e.letter;
         auto known = known_palm_deg.find(key);
-        EXPECT_LE(palm_deg, known == known_palm_deg.end() ? 10.0f : known->second) << key << ": the palm is off its direction";
+        EXPECT_LE(palm_deg, known == known_palm_deg.end() ? 10.0f : known->second)
+            << key << ": the palm is off its direction";
         if (sign.dominant.location.kind == notation::Location::Kind::Body &&
             sign.dominant.location.contact == notation::Contact::None) {
           ASSERT_FALSE(r.report.contact_distances_m.empty()) << key;
-          EXPECT_GE(r.report.contact_distances_m[0], 0.03f) << key << ": held off, but too near its place";
-          EXPECT_LE(r.report.contact_distances_m[0], 0.10f) << key << ": held off, but too far from its place";
+          EXPECT_GE(r.report.contact_distances_m[0], 0.03f) << key << ": held off, too near";
+          EXPECT_LE(r.report.contact_distances_m[0], 0.10f) << key << ": held off, too far from it";
         }
         worst = std::max(worst, palm_deg);
         ++checked;

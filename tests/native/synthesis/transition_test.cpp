@@ -160,7 +160,15 @@ TEST(SynthesisTransition, ShortestPathNeverFlips) {
 // not clear of the body, it fell back to the direct path (40 of the 564); tried again with the
 // swivel searched and bowed further forward, 26 are left and the project avatar's slowest went
 // 1.47 -> 1.27 s (DEAF); on the reference humanoid MORNING stays 2.13 s (its left arm carries
-// the right elbow; routed, docs/SYNTHESIS.md Known issues). Bounds: 1.35 s / 2.2 s.
+// the right elbow; routed, docs/SYNTHESIS.md Known issues). Since the arm IK's swivel change
+// (merged) MORNING and DEAF take the hand's path (0.73-0.90 s), and the slowest were the direct
+// paths left, timed by their fingertips: DAY's hands leaving each other for the rest, 1.43 s
+// (reference) / 1.27 s (avatar). Those fallbacks (direct path, via-poses) are now timed by the
+// arm as the hand's path is (transition.cpp time_rest_path_by_arm): DAY 1.07 / 0.93 s, the
+// slowest of all 1.10 s on both rigs (TEACH's and TEACHER's raise, their hand's path stretched
+// for the arm's 40 m/s^2). Bound: 1.2 s on both rigs (three frames of margin; the old timing
+// fails it on both).
+
 TEST(SynthesisTransition, RestTransitionsTakeTheHandsShortPath) {
   std::string text;
   if (!read_text_file(std::string(SIGNWEAVE_SOURCE_DIR) + "/data/ase/lexicon.jsonl", &text))
@@ -196,7 +204,7 @@ TEST(SynthesisTransition, RestTransitionsTakeTheHandsShortPath) {
     std::sort(durations_s.begin(), durations_s.end());
     const double median_s = durations_s[durations_s.size() / 2];
     EXPECT_LE(median_s, 0.8) << rig_name << ": median rest transition";
-    EXPECT_LE(durations_s.back(), rig_name == "avatar" ? 1.35 : 2.2) << rig_name << ": slowest rest transition";
+    EXPECT_LE(durations_s.back(), 1.2) << rig_name << ": slowest rest transition";
     RecordProperty(rig_name + "_slowest_rest_transition_s", std::to_string(durations_s.back()));
     RecordProperty(rig_name + "_median_rest_transition_s", std::to_string(median_s));
   }
