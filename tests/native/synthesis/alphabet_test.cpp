@@ -94,13 +94,31 @@ INSTANTIATE_TEST_SUITE_P(Data, SynthesisAlphabet, ::testing::Values("ase", "ukl"
 // letters at the chest, no contact) also stays in the 3-10 cm no-contact band. Before the
 // no-contact band search and the ASL letters' move from the shoulder to neutral space, the ASL
 // letters were 28 degrees off on the reference humanoid and 34 on the project avatar, the
-// Ukrainian letters up to 14.5 and 19.2 (docs/SYNTHESIS.md, Orientation of the letters).
-TEST(SynthesisAlphabetOrientation, EveryLetterAndDigitHoldsItsPalmWithin10DegreesOnBothRigs) {
+// Ukrainian letters up to 14.5 and 19.2 (docs/SYNTHESIS.md, Orientation of the letters). The
+// extended fingers' direction the same way, within 10 degrees: before that stop the ASL P and Q
+// pointed 41.7 degrees off.
+TEST(SynthesisAlphabetOrientation, EveryLetterAndDigitHoldsItsPalmAndFingersWithin10DegreesOnBothRigs) {
   std::string error;
   testing::NamedRigs rigs = testing::reference_and_project_avatar(&error);
   ASSERT_TRUE(error.empty()) << error;
   // Letters that truly cannot meet the bound, with the figure they are held to and why: none.
   const std::map<std::string, float> known_palm_deg = {};
+  // The extended finger direction, as much a part of the letter to a reader, with the same
+  // bound. Known: the Ukrainian Л, М, П, Т (fingers down, palm to the signer) at seed 004's L1(0),
+  // the chest right held off 3-10 cm (the data keeps the seed's place). Fingers down with the
+  // palm in need the forearm pointing forward from an elbow at the side and the wrist flexed
+  // 58-75 degrees (limit 75): the wrist 5-10 cm outside the shoulder joint, 20-40 cm below it
+  // (solved exactly there on both rigs). Beside the chest's right anchor, 10-12 cm inside the
+  // shoulder joint, the forearm points inwards and the ulnar deviation (35) cannot make up the
+  // rest: searched over the band (9 cm off, up to 8 cm below and 9 cm out) with the swivel
+  // searched at each, the best hand rotation is 15.8 degrees off (reference) / 10.7 (avatar),
+  // the elbow at the top of its swivel range; the band search's pick (9 cm off, 6 cm below the
+  // anchor) leaves the fingers 18.6 / 14.3 degrees off, with the palm 8.1 / 7.2
+  // (docs/SYNTHESIS.md, Orientation of the letters). Held to those.
+  const std::map<std::string, float> fingers_down_deg = {{"reference", 19.0f}, {"avatar", 15.0f}};
+  const std::map<std::string, std::map<std::string, float>> known_finger_deg = {
+      {"Л", fingers_down_deg}, {"М", fingers_down_deg}, {"П", fingers_down_deg}, {"Т", fingers_down_deg}};
+  float worst_finger = 0.0f;
   int checked = 0;
   for (const char* file : {"ase/alphabet", "ase/digits", "ukl/alphabet"}) {
     std::string text;
@@ -126,10 +144,15 @@ TEST(SynthesisAlphabetOrientation, EveryLetterAndDigitHoldsItsPalmWithin10Degree
         const HandFrame posed = posed_hand_frame(rig, kRight, pose.delta(rig.arms[kRight].hand));
         const float cos_palm = std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f);
         const float palm_deg = testing::deg(std::acos(cos_palm));
+        const float cos_finger = std::clamp(glm::dot(requested.finger, posed.finger), -1.0f, 1.0f);
+        const float finger_deg = testing::deg(std::acos(cos_finger));
         const std::string key = std::string(file) + " " + rg.first + " " + e.letter;
         auto known = known_palm_deg.find(key);
         EXPECT_LE(palm_deg, known == known_palm_deg.end() ? 10.0f : known->second)
             << key << ": the palm is off its direction";
+        auto known_finger = known_finger_deg.find(e.letter);
+        EXPECT_LE(finger_deg, known_finger == known_finger_deg.end() ? 10.0f : known_finger->second.at(rg.first))
+            << key << ": the extended fingers are off their direction";
         if (sign.dominant.location.kind == notation::Location::Kind::Body &&
             sign.dominant.location.contact == notation::Contact::None) {
           ASSERT_FALSE(r.report.contact_distances_m.empty()) << key;
@@ -137,12 +160,14 @@ TEST(SynthesisAlphabetOrientation, EveryLetterAndDigitHoldsItsPalmWithin10Degree
           EXPECT_LE(r.report.contact_distances_m[0], 0.10f) << key << ": held off, too far from it";
         }
         worst = std::max(worst, palm_deg);
+        if (known_finger == known_finger_deg.end()) worst_finger = std::max(worst_finger, finger_deg);
         ++checked;
       }
       RecordProperty(std::string(file) + " " + rg.first + " worst_palm_deg", std::to_string(worst));
     }
   }
   EXPECT_GE(checked, 26 + 11 + 33);
+  RecordProperty("worst_finger_deg_outside_known", std::to_string(worst_finger));
 }
 
 // Issue 4's acceptance for the ASL starter lexicon (data/ase/lexicon.jsonl), as for the letters
