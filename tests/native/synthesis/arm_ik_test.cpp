@@ -208,6 +208,22 @@ TEST(SynthesisArmIk, ATouchTooCloseForTheFoldedArmTiltsTheHandToReach) {
   EXPECT_EQ(mouth.hand_delta, mouth_written);
 }
 
+// The two rigs the wrist tests run on: the reference humanoid and a re-rigged variant 1.1 times
+// its size with arbitrary joint axes (the arm IK must not depend on a rig's conventions).
+struct NamedRig {
+  const char* name;
+  const char* property;  // the RecordProperty key of its figure
+  Rig rig;
+};
+std::vector<NamedRig> reference_and_rerigged() {
+  std::vector<NamedRig> rigs = {{"reference humanoid", "reference", {}},
+                                  {"re-rigged variant", "variant", {}}};
+  std::string error;
+  EXPECT_TRUE(build_rig(make_reference_humanoid(), &rigs[0].rig, &error)) << error;
+  EXPECT_TRUE(build_rig(testing::make_rotated_variant(1.1f), &rigs[1].rig, &error)) << error;
+  return rigs;
+}
+
 // A wrist movement driven past the limits (ArmTarget::wrist_motion): Й's twist, fingers up and
 // the palm out in front of the right shoulder, turned in 0.02 rad steps about the fingers until
 // the request is 0.85 rad beyond the limits. The hand stops on them smoothly: its orientation
@@ -216,11 +232,9 @@ TEST(SynthesisArmIk, ATouchTooCloseForTheFoldedArmTiltsTheHandToReach) {
 // turned request), the error moved 3.1 / 2.4 times as fast as the request (0.063 / 0.047 rad a
 // step): at a signing frame rate, Й's wrist jumped between frames.
 TEST(SynthesisArmIk, AWristTwistPastTheLimitsStopsOnThemOnTwoRigs) {
-  for (int variant = 0; variant < 2; ++variant) {
-    avatar::Avatar av = variant == 0 ? make_reference_humanoid() : testing::make_rotated_variant(1.1f);
-    Rig rig;
-    std::string error;
-    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+  for (const NamedRig& named : reference_and_rerigged()) {
+    const Rig& rig = named.rig;
+    SCOPED_TRACE(named.name);
     const ArmRig& a = rig.arms[kRight];
     notation::Orientation o;
     o.extended_finger = {0, 1, 0};
@@ -249,7 +263,6 @@ TEST(SynthesisArmIk, AWristTwistPastTheLimitsStopsOnThemOnTwoRigs) {
         prev[with] = p;
       }
     }
-    SCOPED_TRACE(variant == 0 ? "reference humanoid" : "re-rigged variant");
     // The key pose is on a limit and the twist takes the request well beyond it (else the test
     // would test nothing).
     EXPECT_GT(most_error, key.orientation_error_rad + 0.4f);
@@ -258,7 +271,7 @@ TEST(SynthesisArmIk, AWristTwistPastTheLimitsStopsOnThemOnTwoRigs) {
     // Without the motion given, the clamped Euler angles' error moved 3.1 (reference) / 2.4
     // (variant) times as fast as the request, the wrist angles with it.
     EXPECT_GT(std::max(worst[0], worst_error[0]), 2.0f * step_rad);
-    RecordProperty(variant == 0 ? "reference" : "variant",
+    RecordProperty(named.property,
                    std::to_string(worst[0]) + "/" + std::to_string(worst_error[0]) + " -> " +
                        std::to_string(worst[1]) + "/" + std::to_string(worst_error[1]));
   }
@@ -275,12 +288,9 @@ TEST(SynthesisArmIk, AWristTwistPastTheLimitsStopsOnThemOnTwoRigs) {
 // (measured 0.071 rad on the reference humanoid), the elbow turning no faster than the request
 // (the swivel's step at most 1.5 request steps) and the wrist on its target.
 TEST(SynthesisArmIk, ATwistBeyondTheForearmsRangeIsCarriedByTheShoulderOnTwoRigs) {
-  for (int variant = 0; variant < 2; ++variant) {
-    avatar::Avatar av = variant == 0 ? make_reference_humanoid() : testing::make_rotated_variant(1.1f);
-    Rig rig;
-    std::string error;
-    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
-    SCOPED_TRACE(variant == 0 ? "reference humanoid" : "re-rigged variant");
+  for (const NamedRig& named : reference_and_rerigged()) {
+    const Rig& rig = named.rig;
+    SCOPED_TRACE(named.name);
     const ArmRig& a = rig.arms[kRight];
     const float reach = a.upper_len_m + a.lower_len_m;
     ArmTarget t;
@@ -319,7 +329,7 @@ TEST(SynthesisArmIk, ATwistBeyondTheForearmsRangeIsCarriedByTheShoulderOnTwoRigs
     // The shoulder's range: the swivel candidates' -1.6..2.0 rad.
     EXPECT_GE(lowest, -1.6f);
     EXPECT_LE(highest, 2.0f);
-    RecordProperty(variant == 0 ? "reference" : "variant", std::to_string(worst_error) + " rad, swivel step " +
+    RecordProperty(named.property, std::to_string(worst_error) + " rad, swivel step " +
                                                                std::to_string(worst_swivel_step));
   }
 }
@@ -370,12 +380,9 @@ TEST(SynthesisArmIk, WristMotionsOfTheLexiconStayNearTheirOrientationOnTwoRigs) 
 // than three times as far in a step (measured 0.93 times on both rigs; before, 24 times in the
 // step over the vertical).
 TEST(SynthesisArmIk, AWristPassingOverTheShoulderKeepsTheElbowOnItsSide) {
-  for (int variant = 0; variant < 2; ++variant) {
-    avatar::Avatar av = variant == 0 ? make_reference_humanoid() : testing::make_rotated_variant(1.1f);
-    Rig rig;
-    std::string error;
-    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
-    SCOPED_TRACE(variant == 0 ? "reference humanoid" : "re-rigged variant");
+  for (const NamedRig& named : reference_and_rerigged()) {
+    const Rig& rig = named.rig;
+    SCOPED_TRACE(named.name);
     const ArmRig& a = rig.arms[kRight];
     const float r = 0.6f * (a.upper_len_m + a.lower_len_m);
     ArmTarget t;
@@ -396,7 +403,7 @@ TEST(SynthesisArmIk, AWristPassingOverTheShoulderKeepsTheElbowOnItsSide) {
       prev_wrist = seg.wrist;
     }
     EXPECT_LT(worst_ratio, 3.0f);
-    RecordProperty(variant == 0 ? "reference" : "variant", std::to_string(worst_ratio));
+    RecordProperty(named.property, std::to_string(worst_ratio));
   }
 }
 
