@@ -695,6 +695,25 @@ constexpr int kHandPathWaypoints = 3;
 // project avatar, 2.5 m/s 0.73 s, 2.8 m/s 0.63 s with a fingertip at 98.6 mm a frame (WOMAN).
 constexpr float kHandPathFingerPeakMPerS = 2.5f;
 
+// A finger's or fingertip's longest step a frame on a rest transition: kHandPathFingerPeakMPerS,
+// scaled as eq. (10)'s k is (the global speed divides every duration) below speed 1, and not
+// above it: a faster signer's hand is no faster than a human hand. Scaled by 1.25, the peak was
+// 3.1 m/s and 605 of the lexicon's 846 sign-settings at speed 1.25 (both rigs, 25/30/60 fps) had
+// a fingertip over the 3 m/s bound in a rest transition (up to 3.48 m/s, MAN's middle tip).
+float finger_peak_step_m(float fps, float speed) { return kHandPathFingerPeakMPerS * std::min(speed, 1.0f) / fps; }
+
+// The longest step a frame any joint may take on a path of eq. (10)'s L_max in k states: a single
+// minimum-jerk profile peaks at 1.875 times the mean speed, +10 % (plan_chain's rule).
+float profile_peak_step_m(float lmax_m, int k) { return 1.875f * lmax_m / k * 1.1f; }
+
+// Which joints are arm joints (arm_joint_list), by joint index: the joints eq. (10)'s L_max is
+// measured on for a rest transition, whose coef is a hand speed.
+std::vector<bool> arm_joint_mask(const Rig& rig) {
+  std::vector<bool> mask(static_cast<size_t>(rig.joint_count), false);
+  for (int j : arm_joint_list(rig)) mask[static_cast<size_t>(j)] = true;
+  return mask;
+}
+
 // A rest transition that does not take the hand's path (plan_hand_path: not shorter, or not clear
 // of the body at any try) is timed as the hand's path is: eq. (10)'s L_max the arm joints' path
 // (coef's 1 m/s is a hand speed), states added where an arm joint outruns the minimum-jerk peak
@@ -708,8 +727,7 @@ template <typename Sampler>
 void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, float speed,
                            Sampler sample, bool chain, TransitionPlan* p) {
   const int J = rig.joint_count;
-  std::vector<bool> arm_joints(static_cast<size_t>(J), false);
-  for (int j : arm_joint_list(rig)) arm_joints[static_cast<size_t>(j)] = true;
+  const std::vector<bool> arm_joints = arm_joint_mask(rig);
   p->lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p->k = transition_states(p->lmax_m, fps, speed);
   sample(p->k, &p->frames);
@@ -729,8 +747,8 @@ void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::qua
       std::swap(prev, cur);
     }
   }
-  const float peak_step_m = 1.875f * p->lmax_m / p->k * 1.1f;
-  const float finger_peak_m = kHandPathFingerPeakMPerS * std::min(speed, 1.0f) / fps;
+  const float peak_step_m = profile_peak_step_m(p->lmax_m, p->k);
+  const float finger_peak_m = finger_peak_step_m(fps, speed);
   const float stretch = std::max(arm_step_m / peak_step_m, finger_step_m / finger_peak_m);
   if (stretch > 1.0f) {
     p->k = static_cast<int>(std::ceil(p->k * stretch));
@@ -927,16 +945,8 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   // sign (ME on the project avatar: index tip 0.97 m, wrist 0.44 m): counted, that turn set k and
   // ME's raise took 1.0 s where a signer takes 0.6-0.8 s. The fingers are held to a human speed
   // by the peak rule below instead (kHandPathFingerPeakMPerS).
-  std::vector<bool> arm_joints(static_cast<size_t>(J), false);
-  for (const ArmRig& a : rig.arms)
-    for (int j : {a.shoulder, a.upper, a.lower, a.hand})
-      if (j >= 0) arm_joints[static_cast<size_t>(j)] = true;
-  // The fingers' (and fingertips') longest step a frame: kHandPathFingerPeakMPerS, scaled as
-  // eq. (10)'s k is (the global speed divides every duration) below speed 1, and not above it:
-  // a faster signer's hand is no faster than a human hand. Scaled by 1.25, the peak was
-  // 3.1 m/s and 605 of the lexicon's 846 sign-settings at speed 1.25 (both rigs, 25/30/60 fps)
-  // had a fingertip over the 3 m/s bound in a rest transition (up to 3.48 m/s, MAN's middle tip).
-  const float finger_peak_m = kHandPathFingerPeakMPerS * std::min(speed, 1.0f) / fps;
+  const std::vector<bool> arm_joints = arm_joint_mask(rig);
+  const float finger_peak_m = finger_peak_step_m(fps, speed);
   TransitionPlan p;
   p.lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p.k = transition_states(p.lmax_m, fps, speed);
@@ -1002,7 +1012,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   p.exempt = transition_exempt(p.k, exempt_from, exempt_to);
   float step_m = 0.0f;
   KindDepths d;
-  const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;  // plan_chain's rule
+  const float peak_step_m = profile_peak_step_m(p.lmax_m, p.k);
   measure(&step_m, &d, peak_step_m, finger_peak_m);
   float stretch = std::max({step_m / peak_step_m, finger_step_m / finger_peak_m,
                             std::sqrt(accel_mps2 / kArmPeakAccelMPerS2)});
@@ -1247,7 +1257,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     // joint that travels most in one piece (a hand's fingertips swinging round the waypoint)
     // can outrun it there: then the states are increased until no joint steps further per frame
     // than the profile's peak over the whole path (the human speed of the direct transitions).
-    const float peak_step_m = 1.875f * p.lmax_m / p.k * 1.1f;
+    const float peak_step_m = profile_peak_step_m(p.lmax_m, p.k);
     const float step_m = max_joint_step(rig, from, to, p.frames, p.k);
     if (step_m > peak_step_m) {
       p.k = static_cast<int>(std::ceil(p.k * step_m / peak_step_m));
