@@ -796,6 +796,145 @@ glm::vec3 other_hand_point(Solver& solver, const HandPlan& plan, const HandPlan&
   return p.point + distance_m * glm::normalize(p.normal);
 }
 
+// Where a hand placed on the other hand and that hand meet (seed 004 / HamNoSys: one hand as the
+// place of the other). The place hand is solved first and this hand put on the named part of it,
+// so this hand's orientation was whatever its arm could reach there (LATER 17 degrees off, BUY
+// 19-22, LEARN 23). A signer brings both hands to where both arms hold their orientations: the
+// place hand, held in neutral space (a region, not a point), moves, and this hand's elbow
+// swivels. Where either hand misses by more than kBandSearchAboveRad (the band search's trigger
+// for a body place), the place hand's key target is searched over a bounded grid round it, as
+// the band search does round a body place: each candidate solves the place arm and this arm on
+// the moved place, both at their key swivels (one solve each), scored over both hands by the
+// palm's error (3 per radian; the acceptance's measure), the whole rotation's (1 per radian), the
+// reach (20 per metre), the body cost and 1.5 per metre moved; the kMeetFinalists best get their
+// swivels searched near their key swivels. A finalist must keep the place hand's palm within
+// 10 degrees (or no worse than it was), both contacts within 1 cm, and bring the worse palm
+// nearer; the best-scoring one wins. Only the place hand's target moves: this hand's target
+// stays relative to its place, so the contact (touch, or held off 4-6 cm along the place's
+// normal) is kept.
+struct MeetingPoint {
+  ArmPose place_arm, hand_arm;
+  glm::vec3 place_target{0.0f}, hand_point{0.0f};
+  float hand_palm_rad = 0.0f, place_palm_rad = 0.0f;
+  float cost = 0.0f;
+};
+bool meet_where_both_hands_hold(Solver& solver, const HandPlan& plan, const HandPlan& place_plan,
+                                HandState* key, HandState* place_key, ArmTarget* t, ArmPose* ap) {
+  const Rig& rig = solver.rig;
+  const BodyModel* body = t->body;
+  // The place hand's key target: a grid of shifts (m) up, across towards the placed hand's side
+  // and forward, inside the neutral space the neutral search roams (up to 24 cm out, 12 up):
+  // 59 candidates at two solves each, then 3 finalists with their swivels searched; only for the
+  // lexicon's dozen signs over the bound, about 0.4 ms each natively (docs/SYNTHESIS.md).
+  static constexpr float kMeetUp[4] = {-0.06f, 0.0f, 0.06f, 0.12f};
+  static constexpr float kMeetAcross[5] = {-0.08f, -0.04f, 0.0f, 0.04f, 0.08f};
+  static constexpr float kMeetForward[3] = {-0.06f, 0.0f, 0.06f};
+  constexpr float kPlaceHoldsRad = 0.17f;   // the place hand's own orientation bound (10 degrees)
+  constexpr float kContactReachM = 0.01f;   // the contact's acceptance (1 cm)
+  const glm::vec3 across = plan.side == kRight ? -rig.left : rig.left;  // to the placed hand's side
+  // The palm normal's error (the acceptance's measure), which the search scores first; the
+  // whole rotation's error (ArmPose::orientation_error_rad, the finger direction too) weighs a
+  // third as much. Scored on the whole rotation alone, the reference humanoid's HOSPITAL found
+  // 51 -> 35 degrees of rotation with the palm 24 -> 35 degrees off.
+  auto palm_error = [&](Side side, const ArmPose& p, const glm::quat& requested) {
+    const float c = glm::dot(posed_hand_frame(rig, side, p.hand).palm, posed_hand_frame(rig, side, requested).palm);
+    return std::acos(std::clamp(c, -1.0f, 1.0f));
+  };
+  // held: both arms at their key swivels, as the frames pose the written meeting point;
+  // otherwise each swivel is searched near its key swivel.
+  auto solve_pair = [&](const glm::vec3& place_target, bool held, MeetingPoint* m) {
+    ArmTarget pt;
+    pt.point = place_target;
+    pt.contact_offset = place_key->offset;
+    pt.hand_delta = place_key->delta;
+    pt.body = body;
+    pt.auto_swivel = !held;
+    pt.swivel_rad = place_key->swivel;
+    pt.has_near_swivel = true;
+    pt.near_swivel_rad = place_key->swivel;
+    m->place_arm = solve_arm(rig, place_plan.side, pt);
+    m->place_target = place_target;
+    PoseBuilder pb(rig);
+    apply_arm(rig, place_plan.side, m->place_arm, &pb);
+    pose_fingers(rig, place_plan.side, place_key->angles, m->place_arm.hand, &pb);
+    pb.finalize();
+    const PartPoint p = solver.other_hand_place(pb, plan);
+    ArmTarget ht = *t;
+    ht.point = key->target + p.point + plan.place_distance_m * glm::normalize(p.normal);
+    ht.auto_swivel = !held;
+    ht.swivel_rad = key->swivel;
+    ht.has_near_swivel = true;
+    ht.near_swivel_rad = key->swivel;
+    m->hand_arm = solve_arm(rig, plan.side, ht);
+    m->hand_point = ht.point;
+    m->hand_palm_rad = palm_error(plan.side, m->hand_arm, key->delta);
+    m->place_palm_rad = palm_error(place_plan.side, m->place_arm, place_key->delta);
+    m->cost = 3.0f * (m->hand_palm_rad + m->place_palm_rad) +
+              (m->hand_arm.orientation_error_rad + m->place_arm.orientation_error_rad) +
+              20.0f * (m->hand_arm.reach_error_m + m->place_arm.reach_error_m) + m->hand_arm.body_cost +
+              m->place_arm.body_cost + 1.5f * glm::length(place_target - place_key->target);
+  };
+  MeetingPoint written;
+  solve_pair(place_key->target, true, &written);
+  // A hand misses where its palm or its whole rotation (the finger direction with it) is more
+  // than 10 degrees off: the frames that follow the key pose (the per-frame pushes and turns, a
+  // brush's or tap's path) take a rotation miss into the palm (the reference humanoid's NICE:
+  // 5.9 degrees of palm and 13.1 of rotation at the key pose, 12.3 of palm in the clip).
+  auto worst_rotation = [](const MeetingPoint& p) {
+    return std::max(p.hand_arm.orientation_error_rad, p.place_arm.orientation_error_rad);
+  };
+  if (written.hand_palm_rad <= kBandSearchAboveRad && written.place_palm_rad <= kBandSearchAboveRad &&
+      worst_rotation(written) <= kBandSearchAboveRad)
+    return false;
+  const float place_bound = std::max(kPlaceHoldsRad, written.place_palm_rad);
+  // A candidate must bring the worse of the two palms nearer its direction (a better score that
+  // trades this hand's palm for the place hand's does not count), or with both palms within
+  // 10 degrees, the worse of the two rotations.
+  const float worse_palm = std::max(written.hand_palm_rad, written.place_palm_rad);
+  auto better = [&](const MeetingPoint& c) {
+    const float palm = std::max(c.hand_palm_rad, c.place_palm_rad);
+    if (palm < worse_palm) return true;
+    return worse_palm <= kBandSearchAboveRad && palm <= kBandSearchAboveRad &&
+           worst_rotation(c) < worst_rotation(written);
+  };
+  const float reach_bound = std::max(kContactReachM, written.hand_arm.reach_error_m);
+  // Candidates are compared with both arms at their key swivels (one solve each, cheap); the
+  // kMeetFinalists best get their swivels searched and are held to the bounds above.
+  constexpr int kMeetFinalists = 3;
+  std::array<MeetingPoint, kMeetFinalists> finalists;
+  int count = 0;
+  MeetingPoint m;
+  for (float up : kMeetUp)
+    for (float ac : kMeetAcross)
+      for (float fw : kMeetForward) {
+        const glm::vec3 shift = up * rig.up + ac * across + fw * rig.forward;
+        if (shift == glm::vec3(0.0f)) continue;
+        solve_pair(place_key->target + shift, true, &m);
+        int at = std::min(count, kMeetFinalists);
+        while (at > 0 && m.cost < finalists[at - 1].cost) {
+          if (at < kMeetFinalists) finalists[at] = finalists[at - 1];
+          --at;
+        }
+        if (at < kMeetFinalists) finalists[at] = m;
+        count = std::min(count + 1, kMeetFinalists);
+      }
+  MeetingPoint best = written;
+  for (int k = 0; k < count; ++k) {
+    solve_pair(finalists[k].place_target, false, &m);
+    if (m.place_palm_rad > place_bound || m.place_arm.reach_error_m > kContactReachM ||
+        m.hand_arm.reach_error_m > reach_bound || !better(m))
+      continue;
+    if (m.cost < best.cost) best = m;
+  }
+  if (best.place_target == written.place_target) return false;
+  place_key->target = best.place_target;
+  place_key->swivel = best.place_arm.swivel_rad;
+  key->swivel = best.hand_arm.swivel_rad;
+  t->point = best.hand_point;
+  *ap = best.hand_arm;
+  return true;
+}
+
 std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::SignSpec& sign) {
   const bool lh = ctx.options.left_handed;
   const Side dom = lh ? kLeft : kRight;
@@ -1166,6 +1305,17 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       ap = solve_arm(rig, plans[i].side, t);
       key[i].swivel = ap.swivel_rad;
     }
+    // Both hands meet where both hold their orientations (meet_where_both_hands_hold): only a
+    // place hand held still in neutral space moves (its key target holds for the whole sign).
+    bool place_still = true, lands_again = false;
+    for (const auto& step : op.steps) place_still = place_still && step.empty();
+    for (const auto& step : plans[i].steps)
+      for (const auto& m : step)
+        lands_again = lands_again || (m.to_location && m.to_location->kind == Location::Kind::OtherHand);
+    const Location& ploc = op.spec.location;
+    if (place_still && !arm_part && !lands_again &&
+        (ploc.kind == Location::Kind::NeutralSpace || ploc.level == BodyLevel::NeutralSpace))
+      meet_where_both_hands_hold(solver, plans[i], op, &key[i], &key[1 - i], &t, &ap);
     if (moves_place && !holds_still) {
       wrist_led[i] = true;
       wrist_from_contact[i] = arm_segments(rig, plans[i].side, ap).wrist - t.point;
