@@ -372,10 +372,10 @@ struct Solver {
         float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + best.body_cost;
         bool moved = false;
         glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
-        auto try_ring = [&](float dx, float lift) {
+        auto try_ring = [&](float dx, float lift, float nearer = 0.0f) {
           for (float du : up_steps)
             for (float dz : in_steps) {
-              glm::vec3 shift = (du + lift) * rig.up + dz * rig.forward + dx * outward;
+              glm::vec3 shift = (du + lift) * rig.up + (dz - nearer) * rig.forward + dx * outward;
               t.point = base + shift;
               ArmPose p = solve_arm(rig, plan.side, t);
               float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m +
@@ -402,6 +402,14 @@ struct Solver {
         for (float lift : {0.12f})
           for (float dx : {0.0f, 0.08f})
             if (best.orientation_error_rad > 0.17f) try_ring(dx, lift);
+        // Nearer the body and lower, still only while over 10 degrees: a hand pointing across
+        // the body to the other side with the palm up (NUMBER's, FRIEND's and SCHOOL's left
+        // hand, seed 004's place hand: 16-17 degrees off at the rings' nearest, 12 cm in) needs
+        // the forearm across the body below the chest, the elbow at the side (within 3 degrees
+        // 14-28 cm in and 0-12 cm lower; 8 cm nearer at the same height left 12-15).
+        for (float dx : {0.0f, 0.08f})
+          for (float nearer : {0.08f, 0.16f})
+            if (best.orientation_error_rad > 0.17f) try_ring(dx, -0.06f, nearer);
         if (moved) {
           t.point = st.target;
           t.auto_swivel = true;
@@ -1307,6 +1315,12 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     }
     // Both hands meet where both hold their orientations (meet_where_both_hands_hold): only a
     // place hand held still in neutral space moves (its key target holds for the whole sign).
+    // Not for a contact part on the arm led by its wrist through a movement (DAY's elbow on the
+    // back of the left hand: searched after the place rounds, the palm came to 0 degrees but the
+    // elbow missed its place by 27 mm on the avatar and slid 6.6 cm along the other hand on the
+    // reference humanoid; before them, the rounds undid most of it, 15-20 degrees, and the elbow
+    // slid 27 cm), nor for a hand that lands on its place again (WHEN: moved, the reference
+    // humanoid's elbow jumped at 4 m/s at the landing, MotionSmoothness).
     bool place_still = true, lands_again = false;
     for (const auto& step : op.steps) place_still = place_still && step.empty();
     for (const auto& step : plans[i].steps)
