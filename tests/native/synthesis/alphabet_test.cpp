@@ -212,32 +212,21 @@ TEST(SynthesisLexiconOrientation, EverySignHoldsItsPalmWithin10DegreesAtItsKeyPo
       // A place on the other hand, or the hand that is the place (seed 004: one hand as the place
       // of the other). Both hands meet where both hold their orientations
       // (sign_motion.cpp, meet_where_both_hands_hold: the place hand in neutral space moves
-      // within a bounded grid, the placed hand's elbow swivels; LATER, NICE, WORK, SCHOOL's place
-      // hand now within 2-3 degrees, NEW's and WRITE's data corrected; FRIEND's and NUMBER's
-      // place hands, palm up across the body, found nearer the body and lower by the neutral
-      // search, 1.5-2.7). Left: BUY, MONEY, LEARN,
-      // STUDENT, WRITE at the best meeting point have the forearm's twist at its supination limit
-      // (+90 degrees from palm down) and the wrist at its deviation limit; HOSPITAL's place is the
-      // other arm's upper arm (a grid step moves it little); DAY and WHEN are not searched (an
-      // elbow contact led by its wrist, a hand landing on the place again: moved, the elbow slid
-      // 6.6 cm along the other hand and WHEN's elbow jumped 4 m/s).
-      {"avatar BUY dominant", 11.8f},
-      {"reference BUY dominant", 12.0f},
+      // within a bounded search, mostly 6-12 cm forward, the placed hand's elbow swivels; LATER,
+      // NICE, WORK, BUY, MONEY, LEARN, STUDENT, SCHOOL's place hand now within 10 degrees, NEW's
+      // and WRITE's data corrected; FRIEND's and NUMBER's place hands, palm up across the body,
+      // found nearer the body and lower by the neutral search). Left: NEW on the reference
+      // humanoid (7.8 degrees at its key pose, 19.8 in the clip's first frame, the brush's path);
+      // HOSPITAL's place is the other arm's upper arm, which the search moves little; DAY and
+      // WHEN are not searched (an elbow contact led by its wrist, a hand landing on the place
+      // again: moved, the elbow slid 6.6 cm along the other hand and WHEN's elbow jumped 4 m/s).
       {"avatar DAY dominant", 31.7f},
       {"reference DAY dominant", 32.6f},
-      {"avatar HOSPITAL dominant", 26.1f},
+      {"avatar HOSPITAL dominant", 23.4f},
       {"reference HOSPITAL dominant", 25.4f},
-      {"avatar LEARN dominant", 15.7f},
-      {"reference LEARN dominant", 12.0f},
-      {"avatar MONEY dominant", 11.8f},
-      {"reference MONEY dominant", 12.0f},
-      {"reference NEW dominant", 23.5f},
-      {"avatar STUDENT dominant", 15.7f},
-      {"reference STUDENT dominant", 12.0f},
+      {"reference NEW dominant", 20.8f},
       {"avatar WHEN dominant", 18.4f},
       {"reference WHEN dominant", 23.1f},
-      {"avatar WRITE dominant", 13.7f},
-      {"reference WRITE dominant", 11.4f},
       // Held off. TEACH, TEACHER (reference) and CHILD (avatar) are one 15 degree step of
       // turn_hand_out_of_body, which frees the arm from the trunk (2.6 and 0.0 without it), as
       // PERSON and HAVE (reference; 9.6, 9.0); the others (before the eyes, the chin, the
