@@ -1330,15 +1330,11 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     // back of the left hand: searched after the place rounds, the palm came to 0 degrees but the
     // elbow missed its place by 27 mm on the avatar and slid 6.6 cm along the other hand on the
     // reference humanoid; before them, the rounds undid most of it, 15-20 degrees, and the elbow
-    // slid 27 cm), nor for a hand that lands on its place again (WHEN: moved, the reference
-    // humanoid's elbow jumped at 4 m/s at the landing, MotionSmoothness).
-    bool place_still = true, lands_again = false;
+    // slid 27 cm).
+    bool place_still = true;
     for (const auto& step : op.steps) place_still = place_still && step.empty();
-    for (const auto& step : plans[i].steps)
-      for (const auto& m : step)
-        lands_again = lands_again || (m.to_location && m.to_location->kind == Location::Kind::OtherHand);
     const Location& ploc = op.spec.location;
-    if (place_still && !arm_part && !lands_again &&
+    if (place_still && !arm_part &&
         (ploc.kind == Location::Kind::NeutralSpace || ploc.level == BodyLevel::NeutralSpace))
       meet_where_both_hands_hold(solver, plans[i], op, &key[i], &key[1 - i], &t, &ap);
     if (moves_place && !holds_still) {
