@@ -1327,10 +1327,11 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     // Both hands meet where both hold their orientations (meet_where_both_hands_hold): only a
     // place hand held still in neutral space moves (its key target holds for the whole sign).
     // Not for a contact part on the arm led by its wrist through a movement (DAY's elbow on the
-    // back of the left hand: searched after the place rounds, the palm came to 0 degrees but the
-    // elbow missed its place by 27 mm on the avatar and slid 6.6 cm along the other hand on the
-    // reference humanoid; before them, the rounds undid most of it, 15-20 degrees, and the elbow
-    // slid 27 cm).
+    // back of the left hand): searched after the place rounds, the reference humanoid's palm came
+    // to 0 degrees, but the frames' arm clearing turns the swivel there (0.4 -> 0.6 rad), which
+    // the key pose's body cost does not see, and the wrist-led elbow misses its place by 39 mm
+    // (the first grid: 27 mm on the avatar, the elbow sliding 6.6 cm along the other hand);
+    // searched before them, the rounds undid most of it (15-20 degrees) and the elbow slid 27 cm.
     bool place_still = true;
     for (const auto& step : op.steps) place_still = place_still && step.empty();
     const Location& ploc = op.spec.location;

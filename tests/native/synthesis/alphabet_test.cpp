@@ -216,10 +216,11 @@ TEST(SynthesisLexiconOrientation, EverySignHoldsItsPalmWithin10DegreesAtItsKeyPo
       // NICE, WORK, BUY, MONEY, LEARN, STUDENT, WHEN, SCHOOL's place hand now within 10
       // degrees, NEW's and WRITE's data corrected; FRIEND's and NUMBER's place hands, palm up
       // across the body, found nearer the body and lower by the neutral search). Left: NEW on the reference
-      // humanoid (7.8 degrees at its key pose, 19.8 in the clip's first frame, the brush's path);
+      // humanoid (7.8 degrees at its key pose, 19.8 in the clip's first frame: the frames' arm
+      // clearing turns the swivel 0.2 rad);
       // HOSPITAL's place is the other arm's upper arm, which the search moves little; DAY is
-      // not searched (an elbow contact led by its wrist: moved, the elbow slid 6.6 cm along the
-      // other hand).
+      // not searched (an elbow contact led by its wrist: moved, the frames' clearing turned the
+      // swivel and the elbow missed the back of the hand by 39 mm).
       {"avatar DAY dominant", 31.7f},
       {"reference DAY dominant", 32.6f},
       {"avatar HOSPITAL dominant", 23.4f},
