@@ -818,9 +818,8 @@ glm::vec3 other_hand_point(Solver& solver, const HandPlan& plan, const HandPlan&
 // swivels searched near their key swivels. A finalist must keep the place hand's palm within
 // 10 degrees (or no worse than it was), both contacts within 1 cm, both arms out of the trunk
 // (2 mm, or no deeper than they were), and bring the worse palm nearer; the best-scoring one
-// wins. Only the place hand's target moves: this hand's target
-// stays relative to its place, so the contact (touch, or held off 4-6 cm along the place's
-// normal) is kept.
+// wins. Only the place hand's target moves: this hand's target stays relative to its place, so
+// the contact (touch, or held off 4-6 cm along the place's normal) is kept.
 struct MeetingPoint {
   ArmPose place_arm, hand_arm;
   glm::vec3 place_target{0.0f}, hand_point{0.0f};
@@ -836,8 +835,9 @@ bool meet_where_both_hands_hold(Solver& solver, const HandPlan& plan, const Hand
   // coarse grid (18), then the neighbours of its best (26) at half its steps; 3 finalists get
   // their swivels searched. The winners in the lexicon lie 6-12 cm forward (away from the
   // body), -12 to +18 cm up, within 8 cm across; the full grid at the fine steps (209 places)
-  // finds the same within 0.1 degree at 4 times the cost. Only for the lexicon's dozen signs
-  // over the bound, about 0.3 ms each natively (docs/SYNTHESIS.md).
+  // finds the same within 0.5 degrees but for BUY and MONEY on the avatar (5.4 for 9.2), at 4
+  // times the cost. Only for the lexicon's dozen signs over the bound, about 0.3 ms each
+  // natively (docs/SYNTHESIS.md).
   static constexpr float kMeetUp[3] = {-0.12f, 0.0f, 0.12f};
   static constexpr float kMeetAcross[3] = {-0.08f, 0.0f, 0.08f};
   static constexpr float kMeetForward[2] = {-0.06f, 0.06f};
