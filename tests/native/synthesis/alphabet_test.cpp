@@ -209,37 +209,23 @@ TEST(SynthesisLexiconOrientation, EverySignHoldsItsPalmWithin10DegreesAtItsKeyPo
       {"avatar WE dominant", 53.3f},
       {"reference WE dominant", 49.5f},
       {"reference WRONG dominant", 16.1f},
-      // A place on the other hand, or the hand that is the place: the other hand is solved first
-      // and this hand's target follows it, with no placement search of its own
-      // (cause per sign not isolated at this stop).
-      {"avatar BUY dominant", 20.4f},
-      {"reference BUY dominant", 23.4f},
+      // A place on the other hand, or the hand that is the place (seed 004: one hand as the place
+      // of the other). Both hands meet where both hold their orientations
+      // (sign_motion.cpp, meet_where_both_hands_hold: the place hand in neutral space moves
+      // within a bounded search, mostly 6-12 cm forward, the placed hand's elbow swivels; LATER,
+      // NICE, WORK, BUY, MONEY, LEARN, STUDENT, WHEN, SCHOOL's place hand now within 10
+      // degrees, NEW's and WRITE's data corrected; FRIEND's and NUMBER's place hands, palm up
+      // across the body, found nearer the body and lower by the neutral search). Left: NEW on the reference
+      // humanoid (the search holds both arms out of the trunk; the brush's frames still turn
+      // the hand, 15.1 in the clip's first frame);
+      // HOSPITAL's place is the other arm's upper arm, which the search moves little; DAY is
+      // not searched (an elbow contact led by its wrist: moved, the frames' clearing turned the
+      // swivel and the elbow missed the back of the hand by 39 mm).
       {"avatar DAY dominant", 31.7f},
       {"reference DAY dominant", 32.6f},
-      {"avatar FRIEND nondominant", 17.9f},
-      {"reference FRIEND nondominant", 17.1f},
-      {"avatar HOSPITAL dominant", 26.3f},
+      {"avatar HOSPITAL dominant", 23.4f},
       {"reference HOSPITAL dominant", 25.4f},
-      {"avatar LATER dominant", 17.4f},
-      {"reference LATER dominant", 18.3f},
-      {"avatar LEARN dominant", 24.1f},
-      {"reference LEARN dominant", 24.0f},
-      {"avatar MONEY dominant", 20.4f},
-      {"reference MONEY dominant", 23.4f},
-      {"avatar NEW dominant", 40.4f},
-      {"reference NEW dominant", 46.3f},
-      {"reference NICE dominant", 13.3f},
-      {"avatar NUMBER nondominant", 17.9f},
-      {"reference NUMBER nondominant", 17.1f},
-      {"avatar SCHOOL nondominant", 17.9f},
-      {"reference SCHOOL nondominant", 17.1f},
-      {"avatar STUDENT dominant", 24.1f},
-      {"reference STUDENT dominant", 24.0f},
-      {"avatar WHEN dominant", 18.4f},
-      {"reference WHEN dominant", 23.1f},
-      {"avatar WORK dominant", 14.3f},
-      {"avatar WRITE dominant", 39.5f},
-      {"reference WRITE dominant", 36.7f},
+      {"reference NEW dominant", 16.1f},
       // Held off. TEACH, TEACHER (reference) and CHILD (avatar) are one 15 degree step of
       // turn_hand_out_of_body, which frees the arm from the trunk (2.6 and 0.0 without it), as
       // PERSON and HAVE (reference; 9.6, 9.0); the others (before the eyes, the chin, the
