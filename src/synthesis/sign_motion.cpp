@@ -355,7 +355,9 @@ struct Solver {
         t.has_near_swivel = true;
         t.near_swivel_rad = *near_swivel;
       }
+      t.seek_orientation_acceptance = true;  // the written pose's own solve (arm_ik.h)
       ArmPose best = solve_arm(rig, plan.side, t);
+      t.seek_orientation_acceptance = false;
       if (spec.location.kind == Location::Kind::NeutralSpace ||
           spec.location.level == BodyLevel::NeutralSpace) {
         // Neutral space is a region, not a point: signers hold an upright hand higher and closer,
