@@ -501,10 +501,16 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
     if (t.has_near_swivel) cost += kSwivelContinuityPerRad * std::fabs(swivel - t.near_swivel_rad);
     return cost;
   };
+  // The grid candidates scored so far that missed the orientation acceptance (the acceptance
+  // search below does not solve them again).
+  bool missed[kSwivelCandidates] = {};
   auto consider = [&](float swivel) {
     if (swivel < kSwivelLo - 1e-4f || swivel > hi + 1e-4f) return;
     ArmPose p;
     const float cost = score(swivel, &p);
+    const float grid = (swivel - kSwivelLo) / kSwivelStep;
+    const int g = static_cast<int>(std::lround(grid));
+    if (std::fabs(grid - static_cast<float>(g)) < 1e-3f) missed[g] = p.orientation_error_rad > kOrientationAcceptanceRad;
     if (cost < best_cost) {
       best_cost = cost;
       best = p;
@@ -539,7 +545,7 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
   // and a touch on its target (within 5 mm, or no further off than the pick), and the
   // cheapest of those by the same cost wins: the elbow's comfort is traded for the wrist's
   // orientation only where a human arm can realise it. Bounded: the grid's 19 candidates,
-  // once, only for a key pose's own solve (ArmTarget::seek_orientation_acceptance) that the pick
+  // once (those already scored over 10 degrees off not again), only for a key pose's own solve (ArmTarget::seek_orientation_acceptance) that the pick
   // leaves over 10 degrees off. DOG's flat hand
   // patting the thigh, fingers down and palm in (the project avatar): at the comfortable swivel
   // the wrist is at its ulnar limit, 14 degrees off; with the elbow swung out, exact.
@@ -549,6 +555,7 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
   ArmPose within, p;
   float within_cost = 1e30f;
   for (int i = 0; i < kSwivelCandidates; ++i) {
+    if (missed[i]) continue;
     const float cost = score(kSwivelLo + kSwivelStep * static_cast<float>(i), &p);
     if (p.orientation_error_rad > kOrientationAcceptanceRad || p.body_cost > best.body_cost + 1e-4f ||
         p.trunk_depth_m > std::min(best.trunk_depth_m + 1e-4f, 0.002f) ||

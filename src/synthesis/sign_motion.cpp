@@ -355,7 +355,9 @@ struct Solver {
         t.has_near_swivel = true;
         t.near_swivel_rad = *near_swivel;
       }
-      t.seek_orientation_acceptance = true;  // the written pose's own solve (arm_ik.h)
+      // A touch's written pose: its own solve seeks the orientation acceptance (arm_ik.h). Not a
+      // hand held off or in neutral space, whose placement searches below re-solve it anyway.
+      t.seek_orientation_acceptance = t.hand_contact;
       ArmPose best = solve_arm(rig, plan.side, t);
       t.seek_orientation_acceptance = false;
       if (spec.location.kind == Location::Kind::NeutralSpace ||
