@@ -187,16 +187,12 @@ TEST(SynthesisLexiconOrientation, EverySignHoldsItsPalmWithin10DegreesAtItsKeyPo
   // measured figure + 1 so it cannot grow unnoticed. These are NOT shown impossible; they are the
   // gaps left at this stop, by cause (docs/SYNTHESIS.md, Orientation of the lexicon's key poses).
   const std::map<std::string, float> known_palm_deg = {
-      // A touch on the face or chest. ME, WE, OLD, BROTHER, SISTER, DEAF and HELLO were written
-      // in poses no arm takes (the wrist beyond its limits at every elbow swivel, or inside the
-      // folded arm's reach); the lexicon now writes them as signers make them (each entry's
-      // description says why). FINE's thumb tip on the chest centre with the fingers up and
-      // WRONG's knuckles on the chin miss as solved (docs/SYNTHESIS.md). (DOG's palm on the
-      // thigh, 10.9 degrees on the avatar, is now 0.3: the key pose's acceptance search,
-      // arm_ik.cpp solve_arm.)
-      {"avatar FINE dominant", 20.0f},
-      {"reference FINE dominant", 14.8f},
-      {"reference WRONG dominant", 16.1f},
+      // A touch on the face or chest: none. ME, WE, OLD, BROTHER, SISTER, DEAF, HELLO, FINE and
+      // WRONG were written in poses no arm takes (the wrist beyond its limits or the arm in the
+      // body at every elbow swivel, or the wrist inside the folded arm's reach); the lexicon now
+      // writes them as signers make them (each entry's description says why). DOG's palm on the
+      // thigh (10.9 degrees on the avatar) is 0.3: the touch's acceptance search (arm_ik.cpp
+      // solve_arm, SynthesisArmIk.AKeyPoseOver10DegreesOffTakesTheSwivelThatRealisesIt).
       // A place on the other hand, or the hand that is the place: the other hand is solved first
       // and this hand's target follows it, with no placement search of its own
       // (cause per sign not isolated at this stop).
