@@ -205,6 +205,43 @@ void pose_arm_at_rest(const Rig& rig, const PoseBuilder& rest, Side side, const 
   }
 }
 
+// A hand in neutral space whose first step twists the wrist (PLAY's Y hands, fingers up and palm
+// in): the placement search scored the key pose alone, and picked one with the wrist flexed 73
+// degrees and the forearm across the fingers, where a twist about the fingers asks the wrist's
+// radial deviation (at its limit) instead of the forearm's rotation: 0.415 rad off at the twist's
+// peak (project avatar; SignMotion::orientation_error_rad). A signer holds the hand where the
+// forearm can turn it. The cost of a placement (at its swivel) then also counts the hand's
+// orientation at the twist's two peaks (phases 3/8 and 5/8 of wrist_motion, the envelope full),
+// solved as the frames solve them (the wrist kept where it is, the motion right-multiplied):
+// 3 per radian of the worse, as the key pose's own error. Zero cost and no solve for any other
+// hand.
+struct WristTwistCost {
+  const Rig& rig;
+  const HandPlan& plan;
+  const HandState& st;
+  const Movement* twist = nullptr;
+  WristTwistCost(const Rig& r, const HandPlan& p, const HandState& s) : rig(r), plan(p), st(s) {
+    if (!plan.steps.empty())
+      for (const Movement& m : plan.steps[0])
+        if (m.kind == MovementKind::WristTwist) twist = &m;
+  }
+  float operator()(const ArmTarget& at, const ArmPose& p) const {
+    if (!twist) return 0.0f;
+    ArmTarget mt = at;
+    mt.auto_swivel = false;
+    mt.swivel_rad = p.swivel_rad;
+    float worst = 0.0f;
+    for (float phase : {0.375f, 0.625f}) {
+      const glm::quat motion = wrist_motion(rig, plan.side, *twist, phase);
+      mt.hand_delta = st.delta * motion;
+      mt.wrist_motion = motion;
+      mt.point = at.point + mt.hand_delta * st.offset - st.delta * st.offset;
+      worst = std::max(worst, solve_arm(rig, plan.side, mt).orientation_error_rad);
+    }
+    return 3.0f * worst;
+  }
+};
+
 struct Solver {
   const SynthContext& ctx;
   const Rig& rig;
@@ -355,7 +392,11 @@ struct Solver {
         t.has_near_swivel = true;
         t.near_swivel_rad = *near_swivel;
       }
+      // A touch's written pose: its own solve seeks the orientation acceptance (arm_ik.h). Not a
+      // hand held off or in neutral space, whose placement searches below re-solve it anyway.
+      t.seek_orientation_acceptance = t.hand_contact;
       ArmPose best = solve_arm(rig, plan.side, t);
+      t.seek_orientation_acceptance = false;
       if (spec.location.kind == Location::Kind::NeutralSpace ||
           spec.location.level == BodyLevel::NeutralSpace) {
         // Neutral space is a region, not a point: signers hold an upright hand higher and closer,
@@ -368,8 +409,10 @@ struct Solver {
         glm::vec3 base = st.target;
         t.auto_swivel = false;
         t.swivel_rad = best.swivel_rad;
+        const WristTwistCost twist_cost{rig, plan, st};
         // (The body cost — arm in the trunk, elbow behind the body — counts as in solve_arm.)
-        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + best.body_cost;
+        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + best.body_cost +
+                          twist_cost(t, best);
         bool moved = false;
         glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
         auto try_ring = [&](float dx, float lift, float nearer = 0.0f) {
@@ -379,7 +422,7 @@ struct Solver {
               t.point = base + shift;
               ArmPose p = solve_arm(rig, plan.side, t);
               float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m +
-                           1.5f * glm::length(shift) + p.body_cost;
+                           1.5f * glm::length(shift) + p.body_cost + twist_cost(t, p);
               if (cost < best_cost) {
                 best_cost = cost;
                 best = p;
@@ -413,7 +456,13 @@ struct Solver {
         if (moved) {
           t.point = st.target;
           t.auto_swivel = true;
+          const ArmPose fixed = best;
           best = solve_arm(rig, plan.side, t);
+          // A twisting hand keeps the compared swivel if its own swivel search (which sees the
+          // key pose alone) would leave less room for the twist.
+          if (twist_cost.twist && 3.0f * fixed.orientation_error_rad + twist_cost(t, fixed) <
+                                      3.0f * best.orientation_error_rad + twist_cost(t, best))
+            best = fixed;
         }
       }
       // A hand held off the FAR side's beside place low down (the right hand beside the left
