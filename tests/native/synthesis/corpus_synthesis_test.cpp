@@ -4,7 +4,7 @@
 // share asserted is the measured one minus a small margin (as hamnosys_corpus_test.cpp does for
 // the parse rates), and the commonest failure reasons are printed.
 //
-// Sampled: every kSampleStride-th clean sign (in file order), so the test takes about 15 s
+// Sampled: every kSampleStride-th clean sign (in file order), so the test takes 15-23 s
 // natively instead of 31-39 s for all 4,433 (measured on the shared 2-core machine); set
 // SIGNWEAVE_CORPUS_FULL=1 to synthesise every one. `signweave check` gives the full figures.
 #include <gtest/gtest.h>
