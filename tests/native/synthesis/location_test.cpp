@@ -191,32 +191,37 @@ TEST(SynthesisLocation, HandsWrittenEachOnTheOtherMeetInNeutralSpaceOnBothRigs) 
     s.symmetry = notation::Symmetry::MirrorLR;
     s.nondominant_is_place = true;  // as the HamNoSys reader writes such a sign
     for (const auto& rg : rigs) {
-      const std::string what = rg.first + ", " + pair.name;
-      Rig rig;
-      std::string error;
-      ASSERT_TRUE(build_rig(rg.second, &rig, &error)) << error;
-      SynthesisResult r = synthesize_sign(s, rg.second);
-      ASSERT_TRUE(r.ok()) << what << ": " << r.errors[0].message;
-      PoseBuilder pb = frame_pose(rig, r.clip, first_sign_frame(r.clip));
-      // The touching part of the right hand; the place on the left hand as the synthesis aims at
-      // it, the avatar's anchor where it has one (Solver::other_hand_place).
-      const PartPoint right = hand_part(pb, kRight, pair.part, pair.finger);
-      PartPoint left;
-      if (!anchor_point(rg.second, pb, hand_part_anchor_name(kLeft, pair.part, pair.finger), &left))
-        left = hand_part(pb, kLeft, pair.part, pair.finger);
-      EXPECT_LT(glm::length(right.point - left.point), 0.01f) << what << ": the hands do not touch";
-      // The pair in neutral space: in front of the chest (at least 15 cm forward of its joint),
-      // between the waist and the shoulders, and within 12 cm of the body's mid-plane.
-      const glm::vec3 meet = 0.5f * (right.point + left.point);
-      const glm::vec3 from_chest = meet - rig.bind_pos[rig.chest];
-      EXPECT_GT(glm::dot(from_chest, rig.forward), 0.15f) << what << ": not in front of the body";
-      EXPECT_LT(std::abs(glm::dot(from_chest, rig.left)), 0.12f) << what << ": off the centre";
-      const float shoulders = glm::dot(rig.bind_pos[rig.arms[kRight].upper], rig.up);
-      const float hips = glm::dot(rig.bind_pos[rig.hips], rig.up);
-      EXPECT_LT(glm::dot(meet, rig.up), shoulders) << what << ": above the shoulders";
-      EXPECT_GT(glm::dot(meet, rig.up), hips + 0.1f) << what << ": down at the hips";
-      EXPECT_LT(r.report.max_reach_error_m, 0.01f) << what;
-      EXPECT_LE(r.report.max_penetration_m, 0.005f) << what << ": an arm in the body";
+      for (bool left_handed : {false, true}) {
+        const std::string what = rg.first + ", " + pair.name + (left_handed ? ", left-handed" : "");
+        SynthesisOptions options;
+        options.left_handed = left_handed;  // the left hand on the right one, mirrored
+        const synthesis::Side dom = left_handed ? kLeft : kRight, place = left_handed ? kRight : kLeft;
+        Rig rig;
+        std::string error;
+        ASSERT_TRUE(build_rig(rg.second, &rig, &error)) << error;
+        SynthesisResult r = synthesize_sign(s, rg.second, options);
+        ASSERT_TRUE(r.ok()) << what << ": " << r.errors[0].message;
+        PoseBuilder pb = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+        // The touching part of the dominant hand; the place on the other hand as the synthesis aims
+        // at it, the avatar's anchor where it has one (Solver::other_hand_place).
+        const PartPoint touching = hand_part(pb, dom, pair.part, pair.finger);
+        PartPoint placed;
+        if (!anchor_point(rg.second, pb, hand_part_anchor_name(place, pair.part, pair.finger), &placed))
+          placed = hand_part(pb, place, pair.part, pair.finger);
+        EXPECT_LT(glm::length(touching.point - placed.point), 0.01f) << what << ": the hands do not touch";
+        // The pair in neutral space: in front of the chest (at least 15 cm forward of its joint),
+        // between the waist and the shoulders, and within 12 cm of the body's mid-plane.
+        const glm::vec3 meet = 0.5f * (touching.point + placed.point);
+        const glm::vec3 from_chest = meet - rig.bind_pos[rig.chest];
+        EXPECT_GT(glm::dot(from_chest, rig.forward), 0.15f) << what << ": not in front of the body";
+        EXPECT_LT(std::abs(glm::dot(from_chest, rig.left)), 0.12f) << what << ": off the centre";
+        const float shoulders = glm::dot(rig.bind_pos[rig.arms[kRight].upper], rig.up);
+        const float hips = glm::dot(rig.bind_pos[rig.hips], rig.up);
+        EXPECT_LT(glm::dot(meet, rig.up), shoulders) << what << ": above the shoulders";
+        EXPECT_GT(glm::dot(meet, rig.up), hips + 0.1f) << what << ": down at the hips";
+        EXPECT_LT(r.report.max_reach_error_m, 0.01f) << what;
+        EXPECT_LE(r.report.max_penetration_m, 0.005f) << what << ": an arm in the body";
+      }
     }
   }
 }
