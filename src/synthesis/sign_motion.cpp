@@ -323,6 +323,60 @@ struct Solver {
     return p;
   }
 
+  // A hand held off a place on the body (no contact: 3-10 cm, issue 4) whose arm is in the trunk
+  // or whose elbow is behind the body turns out of it (turn_hand_out_of_body, arm_ik.h) by 15
+  // degrees or more. A signer holding the hand off the place need not turn it: the hand may be
+  // anywhere in the band, and a few centimetres higher, lower, out or forward free the arm with
+  // the hand's orientation intact (PERSON's and HAVE's flat hands before the chest: the forearm
+  // 7-8 mm in the trunk; TEACH's flat-O hands beside the temples: the elbow behind the body).
+  // The band round the anchor (5, 7, 9 cm, a centimetre inside it for the contact part's reach
+  // error) is searched, each placement with its own swivel; a placement wins only where the arm
+  // is clear (as turn_hand_out_of_body judges it) and the palm within 10 degrees, the nearest to
+  // the written place and orientation best. Without one the turn decides, as before. Bounded
+  // (45 placements) and run only where the turn would be.
+  void hold_off_clear(const HandPlan& plan, const Location& loc, const PartPoint& anchor, ArmTarget* t,
+                      ArmPose* best, HandState* st) const {
+    if (!t->body || loc.kind != Location::Kind::Body || is_touch(loc.contact) ||
+        loc.contact == Contact::ArmExtended || loc.level == BodyLevel::NeutralSpace ||
+        far_side_place(plan, loc) || far_side_beside(plan, loc))
+      return;
+    auto in_conflict = [](const ArmPose& p) {
+      return p.trunk_depth_m > 0.005f || p.body_cost - arm_trunk_cost(p.trunk_depth_m) > 0.03f;
+    };
+    if (!in_conflict(*best)) return;
+    const glm::vec3 written = st->target;
+    const glm::vec3 n = glm::normalize(anchor.normal);
+    const glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
+    auto cost = [&](const ArmPose& p, glm::vec3 target) {
+      return 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(target - written) +
+             p.body_cost;
+    };
+    ArmTarget c = *t;
+    float best_cost = std::numeric_limits<float>::max();
+    ArmPose found;
+    glm::vec3 found_point = written;
+    for (float distance : {0.05f, 0.07f, 0.09f})
+      for (float fwd : {0.0f, 0.5f, 1.0f})
+        for (float up : {-0.5f, 0.0f, 0.5f})
+          for (float out : {-0.4f, 0.0f, 0.4f}) {
+            const glm::vec3 away = n + fwd * rig.forward + up * rig.up + out * outward;
+            if (glm::length(away) < 0.3f) continue;
+            c.point = anchor.point + distance * glm::normalize(away);
+            const ArmPose p = solve_arm(rig, plan.side, c);
+            if (in_conflict(p) || p.orientation_error_rad > kBandSearchAboveRad) continue;
+            const float pc = cost(p, c.point);
+            if (pc < best_cost) {
+              best_cost = pc;
+              found = p;
+              found_point = c.point;
+            }
+          }
+    if (found_point == written) return;
+    *best = found;
+    st->target = found_point;
+    t->point = found_point;
+  }
+
   // near_swivel: the swivel the hand has where this state is reached from (a movement's goal:
   // the state before it), so the sign's key poses choose neighbouring swivels (arm_ik.h
   // ArmTarget::near_swivel_rad); null for the sign's first key pose.
@@ -553,6 +607,8 @@ struct Solver {
           }
         }
       }
+      // A hand held off its place moves within the band before it turns (hold_off_clear).
+      hold_off_clear(plan, spec.location, anchor, &t, &best, &st);
       // An orientation that puts the arm in the body gives way (arm_ik.h).
       t.point = st.target;
       if (turn_hand_out_of_body(rig, plan.side, &t, &best)) st.delta = t.hand_delta;
