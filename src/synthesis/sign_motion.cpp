@@ -333,7 +333,7 @@ struct Solver {
   // error) is searched, each placement with its own swivel; a placement wins only where the arm
   // is clear (as turn_hand_out_of_body judges it) and the palm within 10 degrees, the nearest to
   // the written place and orientation best. Without one the turn decides, as before. Bounded
-  // (45 placements) and run only where the turn would be.
+  // (81 placements at most) and run only where the turn would be.
   void hold_off_clear(const HandPlan& plan, const Location& loc, const PartPoint& anchor, ArmTarget* t,
                       ArmPose* best, HandState* st) const {
     if (!t->body || loc.kind != Location::Kind::Body || is_touch(loc.contact) ||
