@@ -245,10 +245,6 @@ TEST(SynthesisLexiconOrientation, EverySignHoldsItsPalmWithin10DegreesAtItsKeyPo
       // turn_hand_out_of_body): the hand moves within the 3-10 cm band first
       // (sign_motion.cpp, hold_off_clear). The others (before the eyes, the chin, the shoulder,
       // BABY's cradling arms) miss after the band search (cause not isolated).
-      {"avatar BABY dominant", 11.7f},
-      {"reference BABY dominant", 11.2f},
-      {"avatar BABY nondominant", 30.1f},
-      {"reference BABY nondominant", 29.9f},
       {"reference CANT dominant", 14.7f},
       {"avatar DRINK dominant", 19.3f},
       {"reference DRINK dominant", 17.7f},
