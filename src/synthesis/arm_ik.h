@@ -66,6 +66,12 @@ struct ArmTarget {
   // touch on its target and the hand's orientation within 20 degrees.
   bool has_near_swivel = false;
   float near_swivel_rad = 0.0f;
+  // A touch's key pose as written (auto_swivel, no near swivel or its basin left): where the
+  // comfort pick leaves the hand more than 10 degrees off, the rest of the swivel range is
+  // searched for a pose within 10 degrees that keeps the arm out of the body as the pick does
+  // and the touch on its target (arm_ik.cpp solve_arm). Off for the solves that compare
+  // placements, turns or swivel fixes: those trade orientation against the body themselves.
+  bool seek_orientation_acceptance = false;
 };
 
 struct ArmPose {

@@ -205,6 +205,43 @@ void pose_arm_at_rest(const Rig& rig, const PoseBuilder& rest, Side side, const 
   }
 }
 
+// A hand in neutral space whose first step twists the wrist (PLAY's Y hands, fingers up and palm
+// in): the placement search scored the key pose alone, and picked one with the wrist flexed 73
+// degrees and the forearm across the fingers, where a twist about the fingers asks the wrist's
+// radial deviation (at its limit) instead of the forearm's rotation: 0.415 rad off at the twist's
+// peak (project avatar; SignMotion::orientation_error_rad). A signer holds the hand where the
+// forearm can turn it. The cost of a placement (at its swivel) then also counts the hand's
+// orientation at the twist's two peaks (phases 3/8 and 5/8 of wrist_motion, the envelope full),
+// solved as the frames solve them (the wrist kept where it is, the motion right-multiplied):
+// 3 per radian of the worse, as the key pose's own error. Zero cost and no solve for any other
+// hand.
+struct WristTwistCost {
+  const Rig& rig;
+  const HandPlan& plan;
+  const HandState& st;
+  const Movement* twist = nullptr;
+  WristTwistCost(const Rig& r, const HandPlan& p, const HandState& s) : rig(r), plan(p), st(s) {
+    if (!plan.steps.empty())
+      for (const Movement& m : plan.steps[0])
+        if (m.kind == MovementKind::WristTwist) twist = &m;
+  }
+  float operator()(const ArmTarget& at, const ArmPose& p) const {
+    if (!twist) return 0.0f;
+    ArmTarget mt = at;
+    mt.auto_swivel = false;
+    mt.swivel_rad = p.swivel_rad;
+    float worst = 0.0f;
+    for (float phase : {0.375f, 0.625f}) {
+      const glm::quat motion = wrist_motion(rig, plan.side, *twist, phase);
+      mt.hand_delta = st.delta * motion;
+      mt.wrist_motion = motion;
+      mt.point = at.point + mt.hand_delta * st.offset - st.delta * st.offset;
+      worst = std::max(worst, solve_arm(rig, plan.side, mt).orientation_error_rad);
+    }
+    return 3.0f * worst;
+  }
+};
+
 struct Solver {
   const SynthContext& ctx;
   const Rig& rig;
@@ -458,7 +495,11 @@ struct Solver {
         t.has_near_swivel = true;
         t.near_swivel_rad = *near_swivel;
       }
+      // A touch's written pose: its own solve seeks the orientation acceptance (arm_ik.h). Not a
+      // hand held off or in neutral space, whose placement searches below re-solve it anyway.
+      t.seek_orientation_acceptance = t.hand_contact;
       ArmPose best = solve_arm(rig, plan.side, t);
+      t.seek_orientation_acceptance = false;
       if (spec.location.kind == Location::Kind::NeutralSpace ||
           spec.location.level == BodyLevel::NeutralSpace) {
         // Neutral space is a region, not a point: signers hold an upright hand higher and closer,
@@ -471,18 +512,20 @@ struct Solver {
         glm::vec3 base = st.target;
         t.auto_swivel = false;
         t.swivel_rad = best.swivel_rad;
+        const WristTwistCost twist_cost{rig, plan, st};
         // (The body cost — arm in the trunk, elbow behind the body — counts as in solve_arm.)
-        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + best.body_cost;
+        float best_cost = 3.0f * best.orientation_error_rad + 20.0f * best.reach_error_m + best.body_cost +
+                          twist_cost(t, best);
         bool moved = false;
         glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
-        auto try_ring = [&](float dx, float lift) {
+        auto try_ring = [&](float dx, float lift, float nearer = 0.0f) {
           for (float du : up_steps)
             for (float dz : in_steps) {
-              glm::vec3 shift = (du + lift) * rig.up + dz * rig.forward + dx * outward;
+              glm::vec3 shift = (du + lift) * rig.up + (dz - nearer) * rig.forward + dx * outward;
               t.point = base + shift;
               ArmPose p = solve_arm(rig, plan.side, t);
               float cost = 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m +
-                           1.5f * glm::length(shift) + p.body_cost;
+                           1.5f * glm::length(shift) + p.body_cost + twist_cost(t, p);
               if (cost < best_cost) {
                 best_cost = cost;
                 best = p;
@@ -505,10 +548,24 @@ struct Solver {
         for (float lift : {0.12f})
           for (float dx : {0.0f, 0.08f})
             if (best.orientation_error_rad > 0.17f) try_ring(dx, lift);
+        // Nearer the body and lower, still only while over 10 degrees: a hand pointing across
+        // the body to the other side with the palm up (NUMBER's, FRIEND's and SCHOOL's left
+        // hand, seed 004's place hand: 16-17 degrees off at the rings' nearest, 12 cm in) needs
+        // the forearm across the body below the chest, the elbow at the side (within 3 degrees
+        // 14-28 cm in and 0-12 cm lower; 8 cm nearer at the same height left 12-15).
+        for (float dx : {0.0f, 0.08f})
+          for (float nearer : {0.08f, 0.16f})
+            if (best.orientation_error_rad > 0.17f) try_ring(dx, -0.06f, nearer);
         if (moved) {
           t.point = st.target;
           t.auto_swivel = true;
+          const ArmPose fixed = best;
           best = solve_arm(rig, plan.side, t);
+          // A twisting hand keeps the compared swivel if its own swivel search (which sees the
+          // key pose alone) would leave less room for the twist.
+          if (twist_cost.twist && 3.0f * fixed.orientation_error_rad + twist_cost(t, fixed) <
+                                      3.0f * best.orientation_error_rad + twist_cost(t, best))
+            best = fixed;
         }
       }
       // A hand held off the FAR side's beside place low down (the right hand beside the left
@@ -901,6 +958,165 @@ glm::vec3 other_hand_point(Solver& solver, const HandPlan& plan, const HandPlan&
   return p.point + distance_m * glm::normalize(p.normal);
 }
 
+// Where a hand placed on the other hand and that hand meet (seed 004 / HamNoSys: one hand as the
+// place of the other). The place hand is solved first and this hand put on the named part of it,
+// so this hand's orientation was whatever its arm could reach there (LATER 17 degrees off, BUY
+// 19-22, LEARN 23). A signer brings both hands to where both arms hold their orientations: the
+// place hand, held in neutral space (a region, not a point), moves, and this hand's elbow
+// swivels. Where either hand misses by more than kBandSearchAboveRad (the band search's trigger
+// for a body place), the place hand's key target is searched over a bounded grid round it, as
+// the band search does round a body place: each candidate solves the place arm and this arm on
+// the moved place, both at their key swivels (one solve each), scored over both hands by the
+// palm's error (3 per radian; the acceptance's measure), the whole rotation's (1 per radian), the
+// reach (20 per metre), the body cost and 1.5 per metre moved; the kMeetFinalists best get their
+// swivels searched near their key swivels. A finalist must keep the place hand's palm within
+// 10 degrees (or no worse than it was), both contacts within 1 cm, both arms out of the trunk
+// (2 mm, or no deeper than they were), and bring the worse palm nearer; the best-scoring one
+// wins. Only the place hand's target moves: this hand's target stays relative to its place, so
+// the contact (touch, or held off 4-6 cm along the place's normal) is kept.
+struct MeetingPoint {
+  ArmPose place_arm, hand_arm;
+  glm::vec3 place_target{0.0f}, hand_point{0.0f};
+  float hand_palm_rad = 0.0f, place_palm_rad = 0.0f;
+  float cost = 0.0f;
+};
+bool meet_where_both_hands_hold(Solver& solver, const HandPlan& plan, const HandPlan& place_plan,
+                                HandState* key, HandState* place_key, ArmTarget* t, ArmPose* ap) {
+  const Rig& rig = solver.rig;
+  const BodyModel* body = t->body;
+  // The place hand's key target: shifts (m) up, across towards the placed hand's side and
+  // forward, inside the neutral space the neutral search roams (up to 24 cm out, 12 up): a
+  // coarse grid (18), then the neighbours of its best (26) at half its steps; 3 finalists get
+  // their swivels searched. The winners in the lexicon lie 6-12 cm forward (away from the
+  // body), -12 to +18 cm up, within 8 cm across; the full grid at the fine steps (209 places)
+  // finds the same within 0.5 degrees but for BUY and MONEY on the avatar (5.4 for 9.2), at 4
+  // times the cost. Only for the lexicon's dozen signs over the bound, about 0.3 ms each
+  // natively (docs/SYNTHESIS.md).
+  static constexpr float kMeetUp[3] = {-0.12f, 0.0f, 0.12f};
+  static constexpr float kMeetAcross[3] = {-0.08f, 0.0f, 0.08f};
+  static constexpr float kMeetForward[2] = {-0.06f, 0.06f};
+  static constexpr float kFineUpM = 0.06f, kFineAcrossM = 0.04f, kFineForwardM = 0.06f;
+  constexpr float kPlaceHoldsRad = 0.17f;   // the place hand's own orientation bound (10 degrees)
+  constexpr float kContactReachM = 0.01f;   // the contact's acceptance (1 cm)
+  constexpr float kClearM = 0.002f;         // an arm deeper in the trunk is cleared per frame
+  const glm::vec3 across = plan.side == kRight ? -rig.left : rig.left;  // to the placed hand's side
+  // The palm normal's error (the acceptance's measure), which the search scores first; the
+  // whole rotation's error (ArmPose::orientation_error_rad, the finger direction too) weighs a
+  // third as much. Scored on the whole rotation alone, the reference humanoid's HOSPITAL found
+  // 51 -> 35 degrees of rotation with the palm 24 -> 35 degrees off.
+  auto palm_error = [&](Side side, const ArmPose& p, const glm::quat& requested) {
+    const float c = glm::dot(posed_hand_frame(rig, side, p.hand).palm, posed_hand_frame(rig, side, requested).palm);
+    return std::acos(std::clamp(c, -1.0f, 1.0f));
+  };
+  // held: both arms at their key swivels, as the frames pose the written meeting point;
+  // otherwise each swivel is searched near its key swivel.
+  auto solve_pair = [&](const glm::vec3& place_target, bool held, MeetingPoint* m) {
+    ArmTarget pt;
+    pt.point = place_target;
+    pt.contact_offset = place_key->offset;
+    pt.hand_delta = place_key->delta;
+    pt.body = body;
+    pt.auto_swivel = !held;
+    pt.swivel_rad = place_key->swivel;
+    pt.has_near_swivel = true;
+    pt.near_swivel_rad = place_key->swivel;
+    m->place_arm = solve_arm(rig, place_plan.side, pt);
+    m->place_target = place_target;
+    PoseBuilder pb(rig);
+    apply_arm(rig, place_plan.side, m->place_arm, &pb);
+    pose_fingers(rig, place_plan.side, place_key->angles, m->place_arm.hand, &pb);
+    pb.finalize();
+    const PartPoint p = solver.other_hand_place(pb, plan);
+    ArmTarget ht = *t;
+    ht.point = key->target + p.point + plan.place_distance_m * glm::normalize(p.normal);
+    ht.auto_swivel = !held;
+    ht.swivel_rad = key->swivel;
+    ht.has_near_swivel = true;
+    ht.near_swivel_rad = key->swivel;
+    m->hand_arm = solve_arm(rig, plan.side, ht);
+    m->hand_point = ht.point;
+    m->hand_palm_rad = palm_error(plan.side, m->hand_arm, key->delta);
+    m->place_palm_rad = palm_error(place_plan.side, m->place_arm, place_key->delta);
+    m->cost = 3.0f * (m->hand_palm_rad + m->place_palm_rad) +
+              (m->hand_arm.orientation_error_rad + m->place_arm.orientation_error_rad) +
+              20.0f * (m->hand_arm.reach_error_m + m->place_arm.reach_error_m) + m->hand_arm.body_cost +
+              m->place_arm.body_cost + 1.5f * glm::length(place_target - place_key->target);
+  };
+  MeetingPoint written;
+  solve_pair(place_key->target, true, &written);
+  // A hand misses where its palm or its whole rotation (the finger direction with it) is more
+  // than 10 degrees off: the frames that follow the key pose (the per-frame pushes and turns, a
+  // brush's or tap's path) take a rotation miss into the palm (the reference humanoid's NICE:
+  // 5.9 degrees of palm and 13.1 of rotation at the key pose, 12.3 of palm in the clip).
+  auto worst_rotation = [](const MeetingPoint& p) {
+    return std::max(p.hand_arm.orientation_error_rad, p.place_arm.orientation_error_rad);
+  };
+  if (written.hand_palm_rad <= kBandSearchAboveRad && written.place_palm_rad <= kBandSearchAboveRad &&
+      worst_rotation(written) <= kBandSearchAboveRad)
+    return false;
+  const float place_bound = std::max(kPlaceHoldsRad, written.place_palm_rad);
+  // A candidate must bring the worse of the two palms nearer its direction (a better score that
+  // trades this hand's palm for the place hand's does not count), or with both palms within
+  // 10 degrees, the worse of the two rotations.
+  const float worse_palm = std::max(written.hand_palm_rad, written.place_palm_rad);
+  auto better = [&](const MeetingPoint& c) {
+    const float palm = std::max(c.hand_palm_rad, c.place_palm_rad);
+    if (palm < worse_palm) return true;
+    return worse_palm <= kBandSearchAboveRad && palm <= kBandSearchAboveRad &&
+           worst_rotation(c) < worst_rotation(written);
+  };
+  const float reach_bound = std::max(kContactReachM, written.hand_arm.reach_error_m);
+  // Nor an arm deeper in the trunk than the frames leave it (their clearing turns the swivel
+  // where an arm is over kClearM deep, and the palm with it: NEW on the reference humanoid,
+  // 7.8 degrees at the searched key pose, 19.8 in the clip with a 0.2 rad fix; held out of the
+  // trunk, 15.1).
+  const float trunk_bound = std::max(kClearM, written.hand_arm.trunk_depth_m);
+  const float place_trunk_bound = std::max(kClearM, written.place_arm.trunk_depth_m);
+  // Candidates are compared with both arms at their key swivels (one solve each, cheap); the
+  // kMeetFinalists best get their swivels searched and are held to the bounds above.
+  constexpr int kMeetFinalists = 3;
+  std::array<MeetingPoint, kMeetFinalists> finalists;
+  int count = 0;
+  MeetingPoint m;
+  auto consider = [&](const glm::vec3& shift) {
+    if (shift == glm::vec3(0.0f)) return;
+    solve_pair(place_key->target + shift, true, &m);
+    int at = std::min(count, kMeetFinalists);
+    while (at > 0 && m.cost < finalists[at - 1].cost) {
+      if (at < kMeetFinalists) finalists[at] = finalists[at - 1];
+      --at;
+    }
+    if (at < kMeetFinalists) finalists[at] = m;
+    count = std::min(count + 1, kMeetFinalists);
+  };
+  for (float up : kMeetUp)
+    for (float ac : kMeetAcross)
+      for (float fw : kMeetForward) consider(up * rig.up + ac * across + fw * rig.forward);
+  const glm::vec3 centre = finalists[0].place_target - place_key->target;
+  for (int du = -1; du <= 1; ++du)
+    for (int da = -1; da <= 1; ++da)
+      for (int df = -1; df <= 1; ++df)
+        if (du || da || df)
+          consider(centre + float(du) * kFineUpM * rig.up + float(da) * kFineAcrossM * across +
+                   float(df) * kFineForwardM * rig.forward);
+  MeetingPoint best = written;
+  for (int k = 0; k < count; ++k) {
+    solve_pair(finalists[k].place_target, false, &m);
+    if (m.place_palm_rad > place_bound || m.place_arm.reach_error_m > kContactReachM ||
+        m.hand_arm.reach_error_m > reach_bound || !better(m) ||
+        m.hand_arm.trunk_depth_m > trunk_bound || m.place_arm.trunk_depth_m > place_trunk_bound)
+      continue;
+    if (m.cost < best.cost) best = m;
+  }
+  if (best.place_target == written.place_target) return false;
+  place_key->target = best.place_target;
+  place_key->swivel = best.place_arm.swivel_rad;
+  key->swivel = best.hand_arm.swivel_rad;
+  t->point = best.hand_point;
+  *ap = best.hand_arm;
+  return true;
+}
+
 std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::SignSpec& sign) {
   const bool lh = ctx.options.left_handed;
   const Side dom = lh ? kLeft : kRight;
@@ -1271,6 +1487,20 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       ap = solve_arm(rig, plans[i].side, t);
       key[i].swivel = ap.swivel_rad;
     }
+    // Both hands meet where both hold their orientations (meet_where_both_hands_hold): only a
+    // place hand held still in neutral space moves (its key target holds for the whole sign).
+    // Not for a contact part on the arm led by its wrist through a movement (DAY's elbow on the
+    // back of the left hand): searched after the place rounds, the reference humanoid's palm came
+    // to 0 degrees, but the frames' arm clearing turns the swivel there (0.4 -> 0.6 rad), which
+    // the key pose's body cost does not see, and the wrist-led elbow misses its place by 39 mm
+    // (the first grid: 27 mm on the avatar, the elbow sliding 6.6 cm along the other hand);
+    // searched before them, the rounds undid most of it (15-20 degrees) and the elbow slid 27 cm.
+    bool place_still = true;
+    for (const auto& step : op.steps) place_still = place_still && step.empty();
+    const Location& ploc = op.spec.location;
+    if (place_still && !arm_part &&
+        (ploc.kind == Location::Kind::NeutralSpace || ploc.level == BodyLevel::NeutralSpace))
+      meet_where_both_hands_hold(solver, plans[i], op, &key[i], &key[1 - i], &t, &ap);
     if (moves_place && !holds_still) {
       wrist_led[i] = true;
       wrist_from_contact[i] = arm_segments(rig, plans[i].side, ap).wrist - t.point;
