@@ -1,10 +1,18 @@
 // Synthesis time: one sign (a fingerspelled letter: key pose, hold, transitions from and to rest)
 // and a 20-sign phrase, on the project's avatar when models/signweave-avatar.glb is present, else
-// on the procedural reference humanoid. Same workloads as bench/synthesis_bench.mjs in WASM.
+// on the procedural reference humanoid; and every sign of the ASL starter lexicon one at a time,
+// as a dictionary look-up pays it (real signs: two hands, contacts on the other hand, the
+// placement searches the twenty synthetic signs rarely reach). Same workloads as
+// bench/synthesis_bench.mjs in WASM.
+#include <algorithm>
+#include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "bench.h"
 #include "synthesis/phrase_text.h"
@@ -90,4 +98,46 @@ SW_BENCH("synthesis") {
           {"synthesis_20_sign_phrase_per_sign_native_" + which, phrase_ns / 20e6, "ms/sign"},
           {"synthesis_per_sign_native_cpu_" + which, sign_cpu_ms, "ms/sign"},
           {"synthesis_20_sign_phrase_native_cpu_" + which, phrase_cpu_ms, "ms/phrase"}};
+}
+
+// Every lexicon sign from rest and back, one at a time: the mean, median, 90th percentile and
+// slowest CPU time per sign (each sign timed over 5 calls, the same Synthesizer as the page's).
+SW_BENCH("synthesis_lexicon") {
+  using namespace sw::synthesis;
+  std::string which;
+  const sw::avatar::Avatar avatar = bench_avatar(&which);
+  std::ifstream in(std::string(SIGNWEAVE_SOURCE_DIR) + "/data/ase/lexicon.jsonl");
+  std::vector<std::vector<PhraseItem>> signs;
+  std::vector<std::string> glosses;
+  std::string line;
+  while (std::getline(in, line)) {
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (!j.is_object() || !j.contains("notation")) continue;
+    PhraseText t = phrase_from_text(j.value("notation", ""), {});
+    if (!t.ok()) continue;
+    signs.push_back(t.items);
+    glosses.push_back(j.value("gloss", ""));
+  }
+  if (signs.empty()) return {{"synthesis_lexicon_signs", 0.0, "signs"}};
+  Synthesizer synth(avatar);
+  const SynthesisOptions options;
+  std::vector<double> ms;
+  std::vector<std::pair<double, std::string>> slowest;
+  for (size_t i = 0; i < signs.size(); ++i) {
+    ms.push_back(cpu_ms_per_call([&] { synth.phrase(signs[i], options); }, 5));
+    slowest.push_back({ms.back(), glosses[i]});
+  }
+  double total = 0.0;
+  for (double m : ms) total += m;
+  std::sort(ms.begin(), ms.end());
+  // The slowest signs on stderr (stdout stays JSON lines): where a search is worth a look.
+  std::sort(slowest.rbegin(), slowest.rend());
+  for (size_t i = 0; i < std::min<size_t>(5, slowest.size()); ++i)
+    std::fprintf(stderr, "synthesis_lexicon: %s %.2f ms\n", slowest[i].second.c_str(), slowest[i].first);
+  const auto at = [&](double q) { return ms[std::min(ms.size() - 1, static_cast<size_t>(q * ms.size()))]; };
+  return {{"synthesis_lexicon_signs_" + which, double(ms.size()), "signs"},
+          {"synthesis_lexicon_per_sign_mean_native_cpu_" + which, total / ms.size(), "ms/sign"},
+          {"synthesis_lexicon_per_sign_median_native_cpu_" + which, at(0.5), "ms/sign"},
+          {"synthesis_lexicon_per_sign_p90_native_cpu_" + which, at(0.9), "ms/sign"},
+          {"synthesis_lexicon_per_sign_max_native_cpu_" + which, ms.back(), "ms/sign"}};
 }

@@ -360,6 +360,109 @@ struct Solver {
     return p;
   }
 
+  // A hand held off a place on the body (no contact: 3-10 cm, issue 4) whose arm is in the trunk
+  // or whose elbow is behind the body turns out of it (turn_hand_out_of_body, arm_ik.h) by 15
+  // degrees or more. A signer holding the hand off the place need not turn it: the hand may be
+  // anywhere in the band, and a few centimetres higher, lower, out or forward free the arm with
+  // the hand's orientation intact (PERSON's and HAVE's flat hands before the chest: the forearm
+  // 7-8 mm in the trunk; TEACH's flat-O hands beside the temples: the elbow behind the body).
+  // The band round the anchor (5, 7, 9 cm, a centimetre inside it for the contact part's reach
+  // error) is searched, each placement with its own swivel; a placement wins only where the arm
+  // is clear (as turn_hand_out_of_body judges it) and the palm within 10 degrees, the nearest to
+  // the written place and orientation best. Without one the turn decides, as before. Bounded
+  // (81 placements, each solved at one swivel, then at most each with a swivel search) and run
+  // only where the turn would be.
+  void hold_off_clear(const HandPlan& plan, const Location& loc, const PartPoint& anchor, ArmTarget* t,
+                      ArmPose* best, HandState* st) const {
+    if (!t->body || loc.kind != Location::Kind::Body || is_touch(loc.contact) ||
+        loc.contact == Contact::ArmExtended || loc.level == BodyLevel::NeutralSpace ||
+        far_side_place(plan, loc) || far_side_beside(plan, loc))
+      return;
+    auto in_conflict = [](const ArmPose& p) {
+      return p.trunk_depth_m > 0.005f || p.body_cost - arm_trunk_cost(p.trunk_depth_m) > 0.03f;
+    };
+    if (!in_conflict(*best)) return;
+    const glm::vec3 written = st->target;
+    const glm::vec3 n = glm::normalize(anchor.normal);
+    const glm::vec3 outward = plan.side == kLeft ? rig.left : -rig.left;
+    auto cost = [&](const ArmPose& p, glm::vec3 target) {
+      return 3.0f * p.orientation_error_rad + 20.0f * p.reach_error_m + 1.5f * glm::length(target - written) +
+             p.body_cost;
+    };
+    // The band's placements, nearest the written place first: a placement costs at least 1.5 per
+    // metre of shift, so once a clear one costs less than that the farther ones cannot win.
+    struct Placement {
+      glm::vec3 point;
+      float shift_m;
+    };
+    std::array<Placement, 81> placements;
+    size_t count = 0;
+    for (float distance : {0.05f, 0.07f, 0.09f})
+      for (float fwd : {0.0f, 0.5f, 1.0f})
+        for (float up : {-0.5f, 0.0f, 0.5f})
+          for (float out : {-0.4f, 0.0f, 0.4f}) {
+            const glm::vec3 away = n + fwd * rig.forward + up * rig.up + out * outward;
+            if (glm::length(away) < 0.3f) continue;
+            const glm::vec3 point = anchor.point + distance * glm::normalize(away);
+            placements[count++] = {point, glm::length(point - written)};
+          }
+    std::stable_sort(placements.begin(), placements.begin() + static_cast<std::ptrdiff_t>(count),
+                     [](const Placement& a, const Placement& b) { return a.shift_m < b.shift_m; });
+    ArmTarget c = *t;
+    float best_cost = std::numeric_limits<float>::max();
+    ArmPose found;
+    glm::vec3 found_point = written;
+    // First at the written place's swivel (one arm solve each, as the band search compares its
+    // placements): the best clear one, given its own swivel, wins if it is still clear and within
+    // 10 degrees; only otherwise is every placement given its own swivel search (12 solves each).
+    // Over the two lexicon tests (both rigs), 19 of 26 searches end in the first pass: 1,651
+    // single solves and 412 swivel searches, where every placement's swivel search took 1,117
+    // (TEACH on the reference humanoid 2.9 -> 1.5 ms per sign, natively).
+    {
+      ArmTarget fixed = c;
+      fixed.auto_swivel = false;
+      fixed.has_near_swivel = false;
+      fixed.swivel_rad = best->swivel_rad;
+      glm::vec3 pick = written;
+      for (size_t i = 0; i < count && 1.5f * placements[i].shift_m < best_cost; ++i) {
+        fixed.point = placements[i].point;
+        const ArmPose p = solve_arm(rig, plan.side, fixed);
+        if (in_conflict(p) || p.orientation_error_rad > kBandSearchAboveRad) continue;
+        const float pc = cost(p, fixed.point);
+        if (pc < best_cost) {
+          best_cost = pc;
+          pick = fixed.point;
+        }
+      }
+      if (pick != written) {
+        c.point = pick;
+        const ArmPose p = solve_arm(rig, plan.side, c);
+        if (!in_conflict(p) && p.orientation_error_rad <= kBandSearchAboveRad) {
+          *best = p;
+          st->target = pick;
+          t->point = pick;
+          return;
+        }
+      }
+      best_cost = std::numeric_limits<float>::max();
+    }
+    for (size_t i = 0; i < count && 1.5f * placements[i].shift_m < best_cost; ++i) {
+      c.point = placements[i].point;
+      const ArmPose p = solve_arm(rig, plan.side, c);
+      if (in_conflict(p) || p.orientation_error_rad > kBandSearchAboveRad) continue;
+      const float pc = cost(p, c.point);
+      if (pc < best_cost) {
+        best_cost = pc;
+        found = p;
+        found_point = c.point;
+      }
+    }
+    if (found_point == written) return;
+    *best = found;
+    st->target = found_point;
+    t->point = found_point;
+  }
+
   // near_swivel: the swivel the hand has where this state is reached from (a movement's goal:
   // the state before it), so the sign's key poses choose neighbouring swivels (arm_ik.h
   // ArmTarget::near_swivel_rad); null for the sign's first key pose.
@@ -610,6 +713,8 @@ struct Solver {
           }
         }
       }
+      // A hand held off its place moves within the band before it turns (hold_off_clear).
+      hold_off_clear(plan, spec.location, anchor, &t, &best, &st);
       // An orientation that puts the arm in the body gives way (arm_ik.h).
       t.point = st.target;
       if (turn_hand_out_of_body(rig, plan.side, &t, &best)) st.delta = t.hand_delta;

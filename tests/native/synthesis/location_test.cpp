@@ -5,10 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "synthesis/arm_ik.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/orientation.h"
 #include "synthesis/phrase_text.h"
+#include "synthesis/synthesize.h"
+#include "arm_depths.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -59,6 +64,48 @@ TEST(SynthesisLocation, NoContactKeepsTheHand3To10cmAway) {
         EXPECT_GE(d, 0.03f) << "level " << int(level) << " contact " << int(c);
         EXPECT_LE(d, 0.10f) << "level " << int(level) << " contact " << int(c);
       }
+}
+
+// A hand held off a body place whose arm, with the written orientation, would be in the trunk or
+// have its elbow behind the body moves within the 3-10 cm band instead of turning out of the body
+// (sign_motion.cpp, hold_off_clear). Before, turn_hand_out_of_body turned it one 15-degree step:
+// a flat hand held off the chest, palm in (PERSON; the reference humanoid's forearm 6.7 mm in the
+// trunk), 14.9 degrees off; a flat O beside the temple, palm forward (TEACH; the reference
+// humanoid's elbow behind the body), 14.9; a flat hand beside the waist, palm down (CHILD; the
+// project avatar's elbow behind), 14.9. Now each keeps its palm within 10 degrees at the key pose
+// with the contact part still 3-10 cm from the place and the arms out of the trunk (5 mm).
+TEST(SynthesisLocation, AHandHeldOffMovesWithinTheBandRatherThanTurnOutOfTheBody) {
+  std::string error;
+  testing::NamedRigs rigs = testing::reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  const char* signs[] = {
+      "R(H(flat), E(o), P(l), Loc(chest, right, none))",
+      "R(H(pinchall, bent), E(u), P(o), Loc(forehead, right_beside, close))",
+      "R(H(flat), E(o), P(d), Loc(waist, right_beside, none))",
+  };
+  for (const auto& rg : rigs) {
+    Rig rig;
+    ASSERT_TRUE(build_rig(rg.second, &rig, &error)) << error;
+    SynthContext ctx;
+    ASSERT_TRUE(make_context(rg.second, SynthesisOptions{}, &ctx, &error)) << error;
+    for (const char* text : signs) {
+      PhraseText t = phrase_from_text(text, {});
+      ASSERT_TRUE(t.ok()) << text;
+      const notation::SignSpec& sign = t.items[0].sign;
+      SynthesisResult r = synthesize_sign(sign, rg.second);
+      ASSERT_TRUE(r.ok()) << rg.first << " " << text << ": " << r.errors[0].message;
+      PoseBuilder pose = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+      const HandFrame requested = orientation_frame(rig, sign.dominant.orientation, kRight, false);
+      const HandFrame posed = posed_hand_frame(rig, kRight, pose.delta(rig.arms[kRight].hand));
+      const float palm_deg = deg(std::acos(std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f)));
+      EXPECT_LE(palm_deg, 10.0f) << rg.first << " " << text;
+      ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
+      EXPECT_GE(r.report.contact_distances_m[0], 0.03f) << rg.first << " " << text << ": held off, too near";
+      EXPECT_LE(r.report.contact_distances_m[0], 0.10f) << rg.first << " " << text << ": held off, too far";
+      const ArmDepths d = arm_depths(ctx, r);
+      EXPECT_LE(d.trunk_m, 0.005f) << rg.first << " " << text << ": " << d.trunk_what;
+    }
+  }
 }
 
 TEST(SynthesisLocation, ArmJointsStayWithinLimits) {
