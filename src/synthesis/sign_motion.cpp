@@ -1189,6 +1189,43 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   return plans;
 }
 
+// Whether a place on a hand or arm moves with the hand alone: the arm's places (forearm,
+// elbow, upper arm) are where the arm's solve puts them, not at an offset from the hand joint
+// (Solver::part_offset poses the fingers only).
+bool hand_borne_place(HandPlace p) {
+  return p != HandPlace::Forearm && p != HandPlace::ForearmBack && p != HandPlace::Elbow &&
+         p != HandPlace::ElbowInside && p != HandPlace::UpperArm;
+}
+
+// A two-handed sign whose hands are each written on the other (a symmetric sign with a hand
+// contact and no location symbol: RUBBING-ONES-HANDS-TOGETHER, the palm on the palm; FRESH, the
+// thumb tips together; SHIP, the fingertips together; 120 of the real-sign corpus's clean signs).
+// In HamNoSys a sign without a location symbol is made in neutral space, and a hand contact in a
+// two-handed sign says the hands touch each other there (HamNoSys 4 manual, "hand constellation";
+// docs SOURCES.md). Neither hand has a place of its own, so the non-dominant hand becomes the
+// place of the dominant one: it is held at the neutral-space place of its written side (the
+// centre unless written otherwise) with the part the dominant hand touches at the anchor, so the
+// pair meets there; the dominant hand stays on it at the named part. From there the existing
+// placement takes over (the neutral-space search, the place rounds, meet_where_both_hands_hold),
+// as for a place hand written in neutral space. The place hand keeps its orientation, shape and
+// movements (none when the notation makes it the place: SignSpec::nondominant_is_place).
+void place_pair_in_neutral_space(HandPlan* place_plan, const HandPlan& placed) {
+  Location& loc = place_plan->spec.location;
+  loc.kind = Location::Kind::NeutralSpace;
+  loc.level = BodyLevel::NeutralSpace;
+  loc.contact = Contact::None;  // its contact is the placed hand's, which touches it
+  if (hand_borne_place(placed.place)) {
+    loc.contact_part = placed.place;
+    loc.contact_finger = static_cast<std::int8_t>(placed.place_finger);
+  } else {
+    loc.contact_part.reset();  // an arm place: the hand is held at the anchor, the rounds bring the arm
+    loc.contact_finger = -1;
+  }
+  place_plan->on_other_hand = false;
+  place_plan->place_distance_m = 0.0f;
+  place_plan->exempt_hand = true;  // the hands touch on purpose
+}
+
 // The body's turns a one-handed sign may take for a hand on or beside the FAR side of the body
 // (far_side_turns; each is taken only where its key pose measures shallower, below).
 //
@@ -1356,10 +1393,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   Solver solver(ctx, errors, where);
   std::array<HandPlan, 2> plans = make_plans(ctx, sign);
-  if (plans[0].on_other_hand && plans[1].on_other_hand) {
-    errors->push_back({where, "each hand is placed on the other: one of them needs a body or space location"});
-    return false;
-  }
+  if (plans[0].on_other_hand && plans[1].on_other_hand) place_pair_in_neutral_space(&plans[1], plans[0]);
   if (plans[0].on_other_hand && !plans[1].active) {
     // A place on the other hand needs that hand: hold it in neutral space, palm up.
     plans[1].active = true;

@@ -99,13 +99,16 @@ test('notation errors: 422 with the parser message, line, column, offset and sym
   await refused('unknown language', post({ language: 'zzz', gloss: 'X', notation: validNotation() }), 422, /unknown sign language 'zzz'/);
 });
 
-test('a sign that parses but cannot be signed on the avatar: 422 from the synthesis stage', async () => {
-  // Each hand placed on the other: well-formed notation, but no body or space location to start
-  // from — the server must refuse it rather than store a sign the page cannot play.
-  const circular = 'R(H(flat), E(uo), P(l), Loc(hand, palm, touch)) L(H(flat), E(uo), P(r), Loc(hand, palm, touch))';
-  const refusal = await refused('hands on each other', post({ language: 'ase', gloss: 'CIRCULAR', notation: circular }), 422, /cannot be signed/);
-  assert.equal(refusal.detail.stage, 'synthesis');
-  assert.equal(refusal.detail.field, 'notation');
+test('a sign whose hands are each written on the other is signed, not refused by the synthesis stage', async () => {
+  // Each hand placed on the other, no body or space location: the synthesis stage refused it
+  // (422, "each hand is placed on the other"), as it refused 120 clean signs of the real-sign
+  // corpus. In HamNoSys such a pair meets in neutral space (sign_motion.cpp,
+  // place_pair_in_neutral_space), so it is stored. No notation that parses is refused by the
+  // synthesis stage on the project avatar any more (every location, every clean corpus sign):
+  // its 422 answer (docs/API.md) is left for an avatar that lacks a place.
+  const pair = 'R(H(flat), E(uo), P(l), Loc(hand, palm, touch)) L(H(flat), E(uo), P(r), Loc(hand, palm, touch))';
+  const created = await post({ language: 'ase', gloss: 'HANDS-TOGETHER', notation: pair })();
+  assert.equal(created.status, 201, JSON.stringify(created.body));
 });
 
 test('SQL injection strings are data, never SQL', async () => {

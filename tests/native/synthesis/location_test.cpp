@@ -203,6 +203,76 @@ TEST(SynthesisLocation, OtherHandIsThePlace) {
   EXPECT_LE(r.report.max_penetration_m, 0.005f);
 }
 
+// A symmetric sign whose hands are each written on the other, with no location symbol
+// (HamNoSys: made in neutral space, the hands touching each other there; the corpus's
+// RUBBING-ONES-HANDS-TOGETHER, FRESH, SHIP): the notation gives the non-dominant hand the
+// dominant hand's spec mirrored, so each hand's place is on the other and neither has one of its
+// own. It was refused ("each hand is placed on the other"); the pair now meets at the neutral
+// space in front of the body, the dominant hand's part on the other hand's named part.
+TEST(SynthesisLocation, HandsWrittenEachOnTheOtherMeetInNeutralSpaceOnBothRigs) {
+  std::string rig_error;
+  const NamedRigs rigs = reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
+  struct Pair {
+    const char* name;
+    notation::HandShape shape;
+    notation::Direction fingers, palm;
+    notation::HandPlace part;  // the part of each hand, on the same part of the other
+    int finger;
+  };
+  const Pair pairs[] = {
+      // Flat hands, fingers forward, palms together.
+      {"palms together", flat(), {0, 0, 1}, {1, 0, 0}, notation::HandPlace::Palm, 1},
+      // Index hands pointing at each other across the body, palms down, the tips together.
+      {"index tips together", index_point(), {1, 0, 0}, {0, -1, 0}, notation::HandPlace::Fingertip, 1},
+  };
+  for (const Pair& pair : pairs) {
+    notation::SignSpec s = sign_at(pair.shape, BodyLevel::NeutralSpace, Side::Centre, Contact::Touch);
+    s.dominant.location.kind = notation::Location::Kind::OtherHand;
+    s.dominant.location.hand_place = pair.part;
+    s.dominant.location.finger = static_cast<std::int8_t>(pair.finger);
+    s.dominant.location.contact_part = pair.part;
+    s.dominant.location.contact_finger = static_cast<std::int8_t>(pair.finger);
+    s.dominant.orientation.extended_finger = pair.fingers;
+    s.dominant.orientation.palm = pair.palm;
+    s.symmetry = notation::Symmetry::MirrorLR;
+    s.nondominant_is_place = true;  // as the HamNoSys reader writes such a sign
+    for (const auto& rg : rigs) {
+      for (bool left_handed : {false, true}) {
+        const std::string what = rg.first + ", " + pair.name + (left_handed ? ", left-handed" : "");
+        SynthesisOptions options;
+        options.left_handed = left_handed;  // the left hand on the right one, mirrored
+        const synthesis::Side dom = left_handed ? kLeft : kRight, place = left_handed ? kRight : kLeft;
+        Rig rig;
+        std::string error;
+        ASSERT_TRUE(build_rig(rg.second, &rig, &error)) << error;
+        SynthesisResult r = synthesize_sign(s, rg.second, options);
+        ASSERT_TRUE(r.ok()) << what << ": " << r.errors[0].message;
+        PoseBuilder pb = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+        // The touching part of the dominant hand; the place on the other hand as the synthesis aims
+        // at it, the avatar's anchor where it has one (Solver::other_hand_place).
+        const PartPoint touching = hand_part(pb, dom, pair.part, pair.finger);
+        PartPoint placed;
+        if (!anchor_point(rg.second, pb, hand_part_anchor_name(place, pair.part, pair.finger), &placed))
+          placed = hand_part(pb, place, pair.part, pair.finger);
+        EXPECT_LT(glm::length(touching.point - placed.point), 0.01f) << what << ": the hands do not touch";
+        // The pair in neutral space: in front of the chest (at least 15 cm forward of its joint),
+        // between the waist and the shoulders, and within 12 cm of the body's mid-plane.
+        const glm::vec3 meet = 0.5f * (touching.point + placed.point);
+        const glm::vec3 from_chest = meet - rig.bind_pos[rig.chest];
+        EXPECT_GT(glm::dot(from_chest, rig.forward), 0.15f) << what << ": not in front of the body";
+        EXPECT_LT(std::abs(glm::dot(from_chest, rig.left)), 0.12f) << what << ": off the centre";
+        const float shoulders = glm::dot(rig.bind_pos[rig.arms[kRight].upper], rig.up);
+        const float hips = glm::dot(rig.bind_pos[rig.hips], rig.up);
+        EXPECT_LT(glm::dot(meet, rig.up), shoulders) << what << ": above the shoulders";
+        EXPECT_GT(glm::dot(meet, rig.up), hips + 0.1f) << what << ": down at the hips";
+        EXPECT_LT(r.report.max_reach_error_m, 0.01f) << what;
+        EXPECT_LE(r.report.max_penetration_m, 0.005f) << what << ": an arm in the body";
+      }
+    }
+  }
+}
+
 // LATER's key pose: the right thumb tip on the left palm, the index up, palm left, the left flat
 // hand upright, palm right, in neutral space. Put on the left palm where the left hand is held
 // first, the right wrist was at its extension limit and the palm 17 degrees off (reference
