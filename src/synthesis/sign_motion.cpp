@@ -1977,6 +1977,24 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
           }
           if (!ctx.options.avoid_collisions) break;
           Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
+          if (check_hand) {
+            // The first hand in this forearm: solved before this arm was placed, it is checked
+            // by nothing else, and mirrored hands at the centre of neutral space (the corpus's
+            // hamsymmlr circles and strokes, wrists 8-12 cm apart) drove it 37 mm (median) into
+            // this forearm. This arm gives way, opposite to the first hand's way out.
+            Penetration into = hand_penetration(ctx.body, pb, plans[order[0]].side, false, true);
+            if (into.depth_m > pen.depth_m) {
+              pen.depth_m = into.depth_m;
+              pen.push_dir = -into.push_dir;
+            }
+            // Pushed out of the hand only, the forearms then crossed instead (50 corpus signs
+            // deeper, forearm in forearm): the forearms count in the same push.
+            Penetration forearms = arm_penetration(ctx.body, pb, plan.side, false, false, true);
+            if (forearms.depth_m > pen.depth_m) {
+              pen.depth_m = forearms.depth_m;
+              pen.push_dir = forearms.push_dir;
+            }
+          }
           if (pen.depth_m <= 0.002f) break;
           // Out along the escape direction and a little forward (away from the body), which the
           // arm can always follow.

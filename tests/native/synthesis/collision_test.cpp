@@ -867,6 +867,51 @@ TEST(SynthesisCollision, AOneHandedSignDoesNotReachForTheRestingHand) {
   }
 }
 
+// Mirrored hands at the centre of neutral space (hamsymmlr with no place: wrists 8-12 cm apart on
+// the project avatar) circling or stroking: the dominant hand is solved first and the other arm
+// was pushed only out of what ITS hand touched, so the dominant hand went through the other
+// forearm unchecked (the corpus: 216 signs, 37 mm median). The other arm now gives way to it too.
+TEST(SynthesisCollision, MirroredHandsAtTheCentreKeepOutOfEachOthersForearm) {
+  std::string error;
+  const NamedRigs rigs = reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  struct Variant { const char* name; Direction finger, palm; notation::MovementKind kind; Direction dir; };
+  const Variant variants[] = {
+      {"index up, palm down-left, circle out", {0, 1, 0}, {1, -1, 0}, notation::MovementKind::Circle, {0, 0, 1}},
+      {"index up-forward, palm left, circle out", {0, 1, 1}, {1, 0, 0}, notation::MovementKind::Circle, {0, 0, 1}},
+      {"index left, palm down, straight down", {1, 0, 0}, {0, -1, 0}, notation::MovementKind::Straight, {0, -1, 0}},
+      {"index up, palm left, straight left", {0, 1, 0}, {1, 0, 0}, notation::MovementKind::Straight, {1, 0, 0}},
+  };
+  for (const auto& [name, av] : rigs) {
+    Synthesizer synth(av);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    Rig rig;
+    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+    SynthContext ctx;
+    ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
+    for (const Variant& v : variants) {
+      notation::SignSpec s = sign_at(index_point(), BodyLevel::NeutralSpace, Side::Centre, Contact::None);
+      s.symmetry = notation::Symmetry::MirrorLR;
+      s.dominant.orientation.extended_finger = v.finger;
+      s.dominant.orientation.palm = v.palm;
+      notation::Movement m;
+      m.kind = v.kind;
+      if (v.kind == notation::MovementKind::Circle) m.circle_axis = v.dir;
+      else m.direction = v.dir;
+      s.movements.push_back(notation::MovementStep{{m}, {}});
+      const SynthesisResult r = synth.sign(s, SynthesisOptions{});
+      ASSERT_TRUE(r.ok()) << name << " " << v.name << ": " << r.errors[0].message;
+      float deepest = 0.0f;
+      for (int f = 0; f < r.clip.frame_count; ++f) {
+        const PoseBuilder pb = frame_pose(rig, r.clip, f);
+        deepest = std::max(deepest, hand_penetration(ctx.body, pb, kRight, false, true).depth_m);
+      }
+      EXPECT_LE(deepest, 0.005f) << name << ", " << v.name << ": the right hand " << deepest * 1000.0f
+                                 << " mm in the left hand or forearm";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sw::synthesis
 
