@@ -1160,6 +1160,16 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
     n.steps.push_back(sign.nondominant_is_place ? std::vector<Movement>{} : nd);
     for (const auto& m : step.dominant) n.alternating = n.alternating || m.alternating;
   }
+  // A one-handed sign has no other hand to move to. HamNoSys writes the parts of the hand that
+  // make a contact in brackets after the place (an earring: earlobe [touch thumb, index nail]);
+  // read as a movement to "the other hand's palm / fingertip" (the reader's target), it sent the
+  // hand from the ear down to the resting hand by the hip, the forearm through the torso on the
+  // way (the real-sign corpus: about a third of its signs over 5 mm, up to 12 cm). The hand
+  // keeps its written place and contact for the movement's time instead.
+  if (!n.active)
+    for (auto& step : d.steps)
+      for (auto& m : step)
+        if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) m.to_location.reset();
   for (auto& p : plans) {
     const Location& loc = p.spec.location;
     if (loc.kind == Location::Kind::OtherHand) {
@@ -2106,6 +2116,24 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
           }
           if (!ctx.options.avoid_collisions) break;
           Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
+          if (check_hand) {
+            // The first hand in this forearm: solved before this arm was placed, it is checked
+            // by nothing else, and mirrored hands at the centre of neutral space (the corpus's
+            // hamsymmlr circles and strokes, wrists 8-12 cm apart) drove it 37 mm (median) into
+            // this forearm. This arm gives way, opposite to the first hand's way out.
+            Penetration into = hand_penetration(ctx.body, pb, plans[order[0]].side, false, true);
+            if (into.depth_m > pen.depth_m) {
+              pen.depth_m = into.depth_m;
+              pen.push_dir = -into.push_dir;
+            }
+            // Pushed out of the hand only, the forearms then crossed instead (50 corpus signs
+            // deeper, forearm in forearm): the forearms count in the same push.
+            Penetration forearms = arm_penetration(ctx.body, pb, plan.side, false, false, true);
+            if (forearms.depth_m > pen.depth_m) {
+              pen.depth_m = forearms.depth_m;
+              pen.push_dir = forearms.push_dir;
+            }
+          }
           if (pen.depth_m <= 0.002f) break;
           // Out along the escape direction and a little forward (away from the body), which the
           // arm can always follow.

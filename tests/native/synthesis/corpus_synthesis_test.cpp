@@ -1,11 +1,11 @@
-// Synthesis on real signs: every clean sign of ../shared/corpus/hamnosys-dev.jsonl (4,482 DGS and
-// PJM signs, 4,433 of them parse clean) synthesised on the project avatar, as `signweave check
-// FILE --field hamnosys` does; skipped, saying so, where the corpus or the avatar is absent. The
-// share asserted is the measured one minus a small margin (as hamnosys_corpus_test.cpp does for
-// the parse rates), and the commonest failure reasons are printed.
+// Synthesis on real signs: the clean signs of ../shared/corpus/hamnosys-dev.jsonl (4,482 DGS and
+// PJM signs in HamNoSys, 4,433 of them parse clean) synthesised on the project avatar, as
+// `signweave check FILE --field hamnosys` does. The lexicon's signs are hand-picked; the corpus
+// exercises places, movements and hand pairs they do not. Read from SIGNWEAVE_SHARED_DIR, never
+// copied into the repository; skipped, saying so, where the corpus or the avatar is absent.
 //
-// Sampled: every kSampleStride-th clean sign (in file order), so the test takes 15-23 s
-// natively instead of 31-39 s for all 4,433 (measured on the shared 2-core machine); set
+// Sampled: every kSampleStride-th clean sign (in file order), synthesised once for both tests
+// (about 15 s natively for the half, 31-39 s for all 4,433 on the shared 2-core machine); set
 // SIGNWEAVE_CORPUS_FULL=1 to synthesise every one. `signweave check` gives the full figures.
 #include <gtest/gtest.h>
 
@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,14 +29,14 @@
 namespace sw::synthesis {
 namespace {
 
-// The corpus's `hamnosys` field per line (Unicode HamNoSys; some lines have only `names`, which
-// the check with --field hamnosys does not read either), with its gloss.
 constexpr int kSampleStride = 2;
 
 struct CorpusSign {
   std::string gloss, hamnosys;
 };
 
+// The corpus's `hamnosys` field per line (Unicode HamNoSys; some lines have only `names`, which
+// the check with --field hamnosys does not read either), with its gloss.
 std::vector<CorpusSign> load_corpus_hamnosys() {
   std::vector<CorpusSign> out;
   std::ifstream in(std::string(SIGNWEAVE_SHARED_DIR) + "/corpus/hamnosys-dev.jsonl");
@@ -52,40 +53,110 @@ std::vector<CorpusSign> load_corpus_hamnosys() {
   return out;
 }
 
-TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
-  const std::vector<CorpusSign> corpus = load_corpus_hamnosys();
-  if (corpus.empty()) GTEST_SKIP() << "../shared/corpus/hamnosys-dev.jsonl not found: corpus synthesis test skipped";
-  testing::ProjectAvatar project = testing::load_project_avatar();
-  if (!project.present) GTEST_SKIP() << "models/signweave-avatar.glb not found: corpus synthesis test skipped";
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  const Synthesizer synthesizer(project.avatar);
-  ASSERT_TRUE(synthesizer.ok()) << synthesizer.error();
+// What one sampled clean sign gave.
+struct SampledSign {
+  std::string gloss;
+  bool ok = false;
+  std::string error;                  // the first error's message when !ok
+  float max_penetration_m = 0.0f;     // SynthesisReport::max_penetration_m when ok
+  std::vector<std::string> warnings;  // SynthesisReport::warnings when ok
+};
 
-  const char* full = std::getenv("SIGNWEAVE_CORPUS_FULL");
-  const int stride = full && std::string(full) == "1" ? 1 : kSampleStride;
-  const auto started = std::chrono::steady_clock::now();
-  int clean = 0, sampled = 0, synthesised = 0;
-  std::map<std::string, std::vector<std::string>> reasons;  // message -> glosses
-  for (const CorpusSign& c : corpus) {
-    if (c.hamnosys.empty()) continue;
-    const std::vector<notation::SignParse> parsed = notation::parse_signs(c.hamnosys, notation::NotationFormat::HamNoSys);
-    if (parsed.empty() || !parsed[0].ok() || !parsed[0].spec) continue;
-    if (clean++ % stride != 0) continue;
-    ++sampled;
-    const SynthesisResult r = synthesizer.sign(*parsed[0].spec, SynthesisOptions{});
-    if (r.ok()) {
-      ++synthesised;
-    } else {
-      ASSERT_FALSE(r.errors.empty()) << c.gloss << ": a failed synthesis without an error";
-      EXPECT_FALSE(r.errors.front().message.empty()) << c.gloss << ": an error without a message";
-      reasons[r.errors.front().message.substr(0, 100)].push_back(c.gloss);
+struct CorpusSample {
+  std::string skip;  // why the tests skip, when they do
+  int clean = 0;     // clean signs in the corpus
+  int stride = kSampleStride;
+  double seconds = 0.0;
+  std::vector<SampledSign> signs;
+};
+
+// Synthesised once per test binary run: both tests read the same clips' results.
+const CorpusSample& corpus_sample() {
+  static const CorpusSample sample = [] {
+    CorpusSample s;
+    const std::vector<CorpusSign> corpus = load_corpus_hamnosys();
+    if (corpus.empty()) {
+      s.skip = "../shared/corpus/hamnosys-dev.jsonl not found: corpus synthesis tests skipped";
+      return s;
     }
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    testing::ProjectAvatar project = testing::load_project_avatar();
+    if (!project.present) {
+      s.skip = "models/signweave-avatar.glb not found: corpus synthesis tests skipped";
+      return s;
+    }
+    if (!project.error.empty()) {
+      s.skip = "the project avatar does not load: " + project.error;
+      return s;
+    }
+    const Synthesizer synthesizer(project.avatar);
+    if (!synthesizer.ok()) {
+      s.skip = "no synthesizer for the project avatar: " + synthesizer.error();
+      return s;
+    }
+    const char* full = std::getenv("SIGNWEAVE_CORPUS_FULL");
+    s.stride = full && std::string(full) == "1" ? 1 : kSampleStride;
+    const auto started = std::chrono::steady_clock::now();
+    for (const CorpusSign& c : corpus) {
+      if (c.hamnosys.empty()) continue;
+      const std::vector<notation::SignParse> parsed =
+          notation::parse_signs(c.hamnosys, notation::NotationFormat::HamNoSys);
+      if (parsed.empty() || !parsed[0].ok() || !parsed[0].spec) continue;
+      if (s.clean++ % s.stride != 0) continue;
+      const SynthesisResult r = synthesizer.sign(*parsed[0].spec, SynthesisOptions{});
+      SampledSign out;
+      out.gloss = c.gloss;
+      out.ok = r.ok();
+      if (r.ok()) {
+        out.max_penetration_m = r.report.max_penetration_m;
+        out.warnings = r.report.warnings;
+      } else {
+        out.error = r.errors.empty() ? std::string() : r.errors.front().message;
+      }
+      s.signs.push_back(std::move(out));
+    }
+    s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return s;
+  }();
+  return sample;
+}
 
+// The penetration warning synthesize.cpp writes ("penetration of 42.1 mm: right forearm in torso
+// right") as its cause with the sides taken out, so that both hands' cases count together.
+std::string depth_cause(const std::vector<std::string>& warnings) {
+  static const std::regex side(R"(\b(left|right) )");
+  for (const std::string& w : warnings) {
+    if (w.rfind("penetration of ", 0) != 0) continue;
+    const std::size_t colon = w.find(": ");
+    std::string what = colon == std::string::npos ? w : w.substr(colon + 2);
+    what = std::regex_replace(what, side, "");
+    what = std::regex_replace(what, std::regex(R"( (left|right)$)"), "");
+    return what;
+  }
+  return "(no warning)";
+}
+
+struct DepthCause {
+  int signs = 0;
+  float worst_m = 0.0f;
+};
+
+TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
+  const CorpusSample& s = corpus_sample();
+  if (!s.skip.empty()) GTEST_SKIP() << s.skip;
+  int synthesised = 0;
+  std::map<std::string, std::vector<std::string>> reasons;  // message -> glosses
+  for (const SampledSign& sign : s.signs) {
+    if (sign.ok) {
+      ++synthesised;
+      continue;
+    }
+    EXPECT_FALSE(sign.error.empty()) << sign.gloss << ": a failed synthesis without an error message";
+    reasons[sign.error.substr(0, 100)].push_back(sign.gloss);
+  }
+  const int sampled = static_cast<int>(s.signs.size());
   std::printf("[corpus] synthesis on the project avatar: %d of %d sampled clean signs (%.2f%%; 1 in %d of %d clean) "
               "in %.1f s\n",
-              synthesised, sampled, 100.0 * synthesised / std::max(1, sampled), stride, clean, seconds);
+              synthesised, sampled, 100.0 * synthesised / std::max(1, sampled), s.stride, s.clean, s.seconds);
   std::vector<std::pair<size_t, std::string>> ranked;
   for (const auto& [message, glosses] : reasons) ranked.emplace_back(glosses.size(), message);
   std::sort(ranked.rbegin(), ranked.rend());
@@ -97,8 +168,57 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
   // Measured (corpus-pair), all and sampled alike: every clean sign synthesises (4,433 of 4,433;
   // 4,313 before a pair of hands written each on the other was placed in neutral space, 2.7 % of
   // them refused). A margin of 0.5 % for changes that trade a sign or two.
-  EXPECT_GE(clean, 4400) << "the corpus parses less cleanly than measured: hamnosys_corpus_test.cpp says why";
+  EXPECT_GE(s.clean, 4400) << "the corpus parses less cleanly than measured: hamnosys_corpus_test.cpp says why";
   EXPECT_GE(synthesised, static_cast<int>(0.995 * sampled)) << "of " << sampled << " clean signs synthesised";
+}
+
+// Issue 4: no frame may penetrate more than 5 mm except at intended contact. The corpus is held to
+// its measured share of signs over 5 mm (with a small margin) so that it can only improve; the
+// causes that remain are printed, the commonest first (docs/SYNTHESIS.md "Real signs (the
+// corpus)").
+TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
+  const CorpusSample& s = corpus_sample();
+  if (!s.skip.empty()) GTEST_SKIP() << s.skip;
+  // The sample's measured figures, every 2nd clean sign: 2,217 synthesised, 208 over 5 mm
+  // (9.4 %), deepest 135 mm (after corpus-depth's fixes; before them 21 % of all signs).
+  constexpr float kMeasuredShareOver5mm = 0.094f;
+  constexpr float kMeasuredDeepest_m = 0.135f;
+
+  int synthesised = 0, over = 0;
+  float worst_m = 0.0f;
+  std::string worst_gloss;
+  std::map<std::string, DepthCause> causes;
+  for (const SampledSign& sign : s.signs) {
+    if (!sign.ok) continue;  // EveryCleanSignSynthesises counts those
+    ++synthesised;
+    if (sign.max_penetration_m > worst_m) {
+      worst_m = sign.max_penetration_m;
+      worst_gloss = sign.gloss;
+    }
+    if (sign.max_penetration_m <= 0.005f) continue;
+    ++over;
+    DepthCause& c = causes[depth_cause(sign.warnings)];
+    ++c.signs;
+    c.worst_m = std::max(c.worst_m, sign.max_penetration_m);
+  }
+  ASSERT_GT(synthesised, 1000) << "too few corpus signs synthesised to measure";
+
+  std::vector<std::pair<std::string, DepthCause>> ranked(causes.begin(), causes.end());
+  std::sort(ranked.begin(), ranked.end(),
+            [](const auto& a, const auto& b) { return a.second.signs > b.second.signs; });
+  std::string table;
+  for (const auto& [what, c] : ranked)
+    table += "  " + std::to_string(c.signs) + " signs: " + what + " (deepest " +
+             std::to_string(static_cast<int>(c.worst_m * 1000.0f + 0.5f)) + " mm)\n";
+  const float share = static_cast<float>(over) / static_cast<float>(synthesised);
+  std::printf("[corpus] 1 in %d clean signs: %d synthesised, %d over 5 mm (%.1f%%), deepest %.0f mm (%s)\n%s",
+              s.stride, synthesised, over, 100.0f * share, worst_m * 1000.0f, worst_gloss.c_str(),
+              table.c_str());
+
+  // The margins: 1 point (about 20 signs) and 10 mm, for changes elsewhere that move a sign
+  // across the 5 mm line; a fix that lowers the figures lowers the constants with it.
+  EXPECT_LE(share, kMeasuredShareOver5mm + 0.01f) << table;
+  EXPECT_LE(worst_m, kMeasuredDeepest_m + 0.01f) << worst_gloss;
 }
 
 }  // namespace
