@@ -239,20 +239,32 @@ void interpolate_direct(const glm::quat* a, const glm::quat* b, int joints, int 
   }
 }
 
+// With via-poses: each joint's direct slerp and each via's offset slerp from the identity set up
+// once for all the states (JointSlerp), the offsets right-multiplied and the sum normalised four
+// lanes at a time (math/quat_lanes.h): the same arithmetic on the same values as
+// normalize(slerp_shortest(a, b, e) * slerp_shortest(1, delta, w) * ...), bit-identical. The path
+// searches of plan_transition sample every via candidate several times (its length, its states,
+// their re-timing), so the acos and sines per joint per state were most of a routed sign's time.
 void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>& vias, int joints, int k,
                  std::vector<glm::quat>* out) {
   if (vias.empty()) return interpolate_direct(a, b, joints, k, out);
   out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
+  std::vector<JointSlerp> path, offsets;
+  path.reserve(static_cast<size_t>(joints));
+  for (int j = 0; j < joints; ++j) path.emplace_back(a[j], b[j]);
+  offsets.reserve(vias.size() * static_cast<size_t>(joints));
+  for (const Via& via : vias)
+    for (int j = 0; j < joints; ++j) offsets.emplace_back(glm::quat(1, 0, 0, 0), via.delta[static_cast<size_t>(j)]);
   std::vector<float> w(vias.size());
   for (int i = 1; i < k; ++i) {
     float tau = static_cast<float>(i) / k;
     float e = minimum_jerk(tau);
     for (size_t v = 0; v < vias.size(); ++v) w[v] = via_weight(vias, v, tau);
     for (int j = 0; j < joints; ++j) {
-      glm::quat q = slerp_shortest(a[j], b[j], e);
+      math::lanes::Float4 q = path[j].at(e);
       for (size_t v = 0; v < vias.size(); ++v)
-        if (w[v] > 0.0f) q = q * slerp_shortest(glm::quat(1, 0, 0, 0), vias[v].delta[j], w[v]);
-      (*out)[static_cast<size_t>(i - 1) * joints + j] = glm::normalize(q);
+        if (w[v] > 0.0f) q = math::lanes::quat_mul(q, offsets[v * static_cast<size_t>(joints) + j].at(w[v]));
+      math::lanes::store4(&(*out)[static_cast<size_t>(i - 1) * joints + j], math::lanes::quat_normalize(q));
     }
   }
 }
