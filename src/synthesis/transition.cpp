@@ -817,13 +817,26 @@ class HandChain {
         if (j >= 0) arm_joint_[static_cast<size_t>(j)] = true;
     direct_.reserve(static_cast<size_t>(rig.joint_count));
     for (int j = 0; j < rig.joint_count; ++j) direct_.emplace_back(from[j], to[j]);
+    // Each arm joint's slerp along each piece, set up once: the chain is sampled several times
+    // (its length, its states, their re-timing and the phases between them).
+    for (int j = 0; j < rig.joint_count; ++j) {
+      if (!arm_joint_[static_cast<size_t>(j)]) continue;
+      piece_joint_.push_back(j);
+      for (size_t p = 0; p + 1 < knots_.size(); ++p) pieces_.emplace_back(knots_[p][j], knots_[p + 1][j]);
+    }
+    piece_of_joint_.assign(static_cast<size_t>(rig.joint_count), -1);
+    for (size_t n = 0; n < piece_joint_.size(); ++n) piece_of_joint_[static_cast<size_t>(piece_joint_[n])] = static_cast<int>(n);
   }
   // The k-1 intermediate states (interpolate_chain's form).
   void sample(int k, std::vector<glm::quat>* out) const {
     const int J = rig_.joint_count;
     const size_t pieces = knots_.size() - 1;
+    // slerp_shortest(knots_[p][j], knots_[p + 1][j], ...) set up once (JointSlerp): bit-identical.
     auto piece = [&](size_t p, int j, float e) {
-      return slerp_shortest(knots_[p][j], knots_[p + 1][j], (e - u_[p]) / (u_[p + 1] - u_[p]));
+      const JointSlerp& path = pieces_[static_cast<size_t>(piece_of_joint_[static_cast<size_t>(j)]) * pieces + p];
+      glm::quat q;
+      math::lanes::store4(&q, path.at((e - u_[p]) / (u_[p + 1] - u_[p])));
+      return q;
     };
     auto fraction = [&](size_t p, float e) { return s_[p] + (e - u_[p]) / (u_[p + 1] - u_[p]) * (s_[p + 1] - s_[p]); };
     out->resize(static_cast<size_t>(std::max(0, k - 1)) * J);
@@ -855,6 +868,10 @@ class HandChain {
   std::vector<float> s_, u_, half_;
   std::vector<bool> arm_joint_;
   std::vector<JointSlerp> direct_;  // each joint's direct slerp, set up once
+  // The arm joints' slerps along the pieces: pieces_[n * pieces + p] for arm joint
+  // piece_joint_[n] (piece_of_joint_[j] = n), piece p.
+  std::vector<int> piece_joint_, piece_of_joint_;
+  std::vector<JointSlerp> pieces_;
 };
 
 // transition_path_m's measurement of the direct path, walked only as far as a question needs:
