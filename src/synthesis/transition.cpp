@@ -994,6 +994,15 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   const AccelPoints accel_points = accel_point_list(rig);
   const size_t arms_n = accel_points.joints.size();
   std::vector<glm::vec3> arm_pos;
+  // What the end poses themselves have: a pass deeper than this, of either kind, is not taken
+  // (`deeper`), so once a pass's depth of one kind exceeds it the rest of its states' checks
+  // cannot change the outcome (depths only grow along the pass) and are skipped.
+  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
+  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
+  constexpr float kNothingAdded_m = 0.0005f;  // plan_transition's: sampling
+  const float hand_ceiling_m = std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m;
+  const float arm_ceiling_m = std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m;
+  auto is_deeper = [&](const KindDepths& d) { return d.hand_m > hand_ceiling_m || d.arm_m > arm_ceiling_m; };
   auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
     std::vector<glm::vec3> prev(J), cur(J);
@@ -1015,6 +1024,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
       }
       std::swap(prev, cur);
       if (i == 0 || i == p.k || *step_m > abandon_step_m || finger_step_m > abandon_finger_step_m) continue;
+      if (is_deeper(*d)) continue;
       const std::uint8_t ex = p.exempt[static_cast<size_t>(i - 1)];
       for (int side_index = 0; side_index < 2; ++side_index) {
         const Side side = static_cast<Side>(side_index);
@@ -1062,11 +1072,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     stretch = std::sqrt(accel_mps2 / kArmPeakAccelMPerS2);
   }
   p.via_points = kHandPathWaypoints;
-  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
-  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
-  constexpr float kNothingAdded_m = 0.0005f;  // plan_transition's: sampling
-  if (d.hand_m > std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m ||
-      d.arm_m > std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m) {
+  if (is_deeper(d)) {
     *deeper = true;
     return false;
   }
