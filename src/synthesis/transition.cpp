@@ -840,6 +840,7 @@ class HandChain {
     };
     auto fraction = [&](size_t p, float e) { return s_[p] + (e - u_[p]) / (u_[p + 1] - u_[p]) * (s_[p + 1] - s_[p]); };
     out->resize(static_cast<size_t>(std::max(0, k - 1)) * J);
+    float first_s = -1.0f;
     for (int i = 1; i < k; ++i) {
       const float e = minimum_jerk(static_cast<float>(i) / k);
       size_t seg = 0;
@@ -850,10 +851,16 @@ class HandChain {
       const float x = knot ? (e - (u_[knot] - half_[knot])) / (2.0f * half_[knot]) : 0.0f;
       const float fade = x * x * (3.0f - 2.0f * x);
       const float s = knot ? fraction(knot - 1, e) + fade * (fraction(knot, e) - fraction(knot - 1, e)) : fraction(seg, e);
+      if (i == 1) first_s = s;
       glm::quat* state = &(*out)[static_cast<size_t>(i - 1) * J];
       for (int j = 0; j < J; ++j) {
         if (!arm_joint_[static_cast<size_t>(j)]) {
-          math::lanes::store4(&state[j], direct_[static_cast<size_t>(j)].at(s));
+          // A joint that does not move (JointSlerp::constant) has the same sample at every s > 0
+          // (interpolate_direct's rule): copied from the first state.
+          if (i > 1 && s > 0.0f && first_s > 0.0f && direct_[static_cast<size_t>(j)].constant)
+            state[j] = (*out)[static_cast<size_t>(j)];
+          else
+            math::lanes::store4(&state[j], direct_[static_cast<size_t>(j)].at(s));
           continue;
         }
         const glm::quat q = knot ? slerp_shortest(piece(knot - 1, j, e), piece(knot, j, e), fade) : piece(seg, j, e);
