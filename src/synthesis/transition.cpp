@@ -355,11 +355,26 @@ float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sample
 struct KindDepths {
   float hand_m = 0.0f, arm_m = 0.0f;
 };
-KindDepths depths_by_kind(const SynthContext& ctx, const glm::quat* frames, int frame_count, const std::uint8_t* exempt) {
+// How much deeper than the floors (each kind's depth at the end poses) `d` goes: the kinds'
+// excesses added (plan_transition judges a routed path by it).
+float excess_over(const KindDepths& d, float hand_floor_m, float arm_floor_m) {
+  return std::max(0.0f, d.hand_m - hand_floor_m) + std::max(0.0f, d.arm_m - arm_floor_m);
+}
+
+// A bound past which the caller has no use for the depths: once the excess over the floors
+// exceeds `above_m` (the depths only grow frame by frame, and so does the excess), the rest of
+// the frames are not checked and the depths returned are the part measured, already past it.
+struct ExcessBound {
+  float hand_floor_m = 0.0f, arm_floor_m = 0.0f, above_m = 0.0f;
+};
+
+KindDepths depths_by_kind(const SynthContext& ctx, const glm::quat* frames, int frame_count, const std::uint8_t* exempt,
+                          const ExcessBound* bound = nullptr) {
   const Rig& rig = ctx.rig;
   KindDepths d;
   PoseBuilder pb(rig);
   for (int f = 0; f < frame_count; ++f) {
+    if (bound && excess_over(d, bound->hand_floor_m, bound->arm_floor_m) > bound->above_m) break;
     const glm::quat* frame = frames + static_cast<size_t>(f) * rig.joint_count;
     if (f > 0 && exempt[f] == exempt[f - 1] &&
         std::memcmp(frame, frame - rig.joint_count, sizeof(glm::quat) * rig.joint_count) == 0)
@@ -1187,9 +1202,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const KindDepths to_depths = depths_by_kind(ctx, to, 1, &exempt_to);
   const float hand_floor_m = std::max(from_depths.hand_m, to_depths.hand_m);
   const float arm_floor_m = std::max(from_depths.arm_m, to_depths.arm_m);
-  auto excess_of = [&](const KindDepths& d) {
-    return std::max(0.0f, d.hand_m - hand_floor_m) + std::max(0.0f, d.arm_m - arm_floor_m);
-  };
+  auto excess_of = [&](const KindDepths& d) { return excess_over(d, hand_floor_m, arm_floor_m); };
   constexpr float kNothingAdded_m = 0.0005f;
   const KindDepths direct_depths = depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data());
   const float direct_excess = excess_of(direct_depths);
@@ -1220,6 +1233,13 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       push[s] = glm::normalize(arm.push_dir + rig.forward) * (arm.depth_m + 0.03f);
   }
   TransitionPlan best = plan;
+  // The candidate that adds least beyond the end poses wins (then the shallowest); the first
+  // within 5 mm, or adding nothing, is taken (consider, below).
+  float best_excess = direct_excess;
+  // A candidate whose excess is already past best_excess + 1e-4 part way along its states cannot
+  // win (consider's both tests fail, and the excess only grows): its remaining states are not
+  // checked (depths_by_kind's bound).
+  auto losing_bound = [&] { return ExcessBound{hand_floor_m, arm_floor_m, best_excess + 1e-4f}; };
   // A via-pose at time `tau` of the direct path: each pushed hand's wrist target moved by its
   // push, the arm re-solved by the arm IK with the body model (shoulder girdle included, so the
   // clavicle's protraction travels with the arm instead of being slerped apart from it);
@@ -1266,7 +1286,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       stretch_for_arm_accel(rig, from, to, fps, sample_vias, false, &p.k, &p.frames);
     }
     p.exempt = exempt_for(p.k);
-    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+    const ExcessBound bound = losing_bound();
+    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);
     out.second = excess_of(d);
     return out;
@@ -1286,7 +1307,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     if (hand_path_tried) {
       time_rest_path_by_arm(rig, from, to, fps, speed, sample, true, &p);
       p.exempt = exempt_for(p.k);
-      const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+      const ExcessBound bound = losing_bound();
+      const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
       p.max_penetration_m = std::max(d.hand_m, d.arm_m);
       result.second = excess_of(d);
       return result;
@@ -1307,14 +1329,12 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     }
     stretch_for_arm_accel(rig, from, to, fps, sample, true, &p.k, &p.frames);
     p.exempt = exempt_for(p.k);
-    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+    const ExcessBound bound = losing_bound();
+    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);
     result.second = excess_of(d);
     return result;
   };
-  // The candidate that adds least beyond the end poses wins (then the shallowest); the first
-  // within 5 mm, or adding nothing, is taken.
-  float best_excess = direct_excess;
   auto consider = [&](std::pair<TransitionPlan, float> c) {
     if (c.second < best_excess - 1e-4f ||
         (c.second <= best_excess + 1e-4f && c.first.max_penetration_m < best.max_penetration_m)) {
