@@ -255,12 +255,34 @@ void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>&
   offsets.reserve(vias.size() * static_cast<size_t>(joints));
   for (const Via& via : vias)
     for (int j = 0; j < joints; ++j) offsets.emplace_back(glm::quat(1, 0, 0, 0), via.delta[static_cast<size_t>(j)]);
+  // A joint whose direct slerp and every via offset are constant (JointSlerp::constant: the same
+  // sample at every fraction > 0) has the same inputs, so the same result, at every state whose
+  // weights are > 0 for the same vias as the first state's: copied from it (interpolate_direct's
+  // rule, the offsets included).
+  std::vector<char> fixed(static_cast<size_t>(joints), 0);
+  for (int j = 0; j < joints; ++j) {
+    bool all = path[static_cast<size_t>(j)].constant;
+    for (size_t v = 0; all && v < vias.size(); ++v) all = offsets[v * static_cast<size_t>(joints) + j].constant;
+    fixed[static_cast<size_t>(j)] = all;
+  }
   std::vector<float> w(vias.size());
+  std::vector<char> first_weighted(vias.size(), 0);
+  float first_e = 0.0f;
   for (int i = 1; i < k; ++i) {
     float tau = static_cast<float>(i) / k;
     float e = minimum_jerk(tau);
     for (size_t v = 0; v < vias.size(); ++v) w[v] = via_weight(vias, v, tau);
+    bool as_first = i > 1 && e > 0.0f && first_e > 0.0f;
+    for (size_t v = 0; v < vias.size(); ++v) {
+      if (i == 1) first_weighted[v] = w[v] > 0.0f;
+      else as_first = as_first && (w[v] > 0.0f) == static_cast<bool>(first_weighted[v]);
+    }
+    if (i == 1) first_e = e;
     for (int j = 0; j < joints; ++j) {
+      if (as_first && fixed[static_cast<size_t>(j)]) {
+        (*out)[static_cast<size_t>(i - 1) * joints + j] = (*out)[static_cast<size_t>(j)];
+        continue;
+      }
       math::lanes::Float4 q = path[j].at(e);
       for (size_t v = 0; v < vias.size(); ++v)
         if (w[v] > 0.0f) q = math::lanes::quat_mul(q, offsets[v * static_cast<size_t>(joints) + j].at(w[v]));
