@@ -1,6 +1,8 @@
 // Synthesis time in WebAssembly (SIMD and scalar builds): one sign from rest and back, and a
-// 20-sign phrase, on the project's avatar (else the reference humanoid). Same signs as
-// bench/synthesis_bench.cpp; target: under 1 ms per sign.
+// 20-sign phrase, on the project's avatar (else the reference humanoid); and every sign of the ASL
+// starter lexicon from rest and back, as a dictionary look-up pays it (mean, median, p90 and max CPU
+// ms per sign; the slowest signs on stderr). Same workloads as bench/synthesis_bench.cpp; target:
+// under 1 ms per sign.
 import { existsSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 
@@ -31,6 +33,14 @@ const SIGNS = [
 ];
 const PHRASE = SIGNS.map((s, i) => `S${i} = ${s}`).join('\n');
 const MODEL = path.join(ROOT, 'models', 'signweave-avatar.glb');
+// The starter lexicon's notations and glosses (data/ase/lexicon.jsonl, one JSON object a line).
+const LEXICON = readFileSync(path.join(ROOT, 'data', 'ase', 'lexicon.jsonl'), 'utf8')
+  .split('\n')
+  .filter((line) => line.trim() !== '')
+  .map((line) => JSON.parse(line))
+  .filter((entry) => typeof entry.notation === 'string');
+// Calls per lexicon sign: its CPU time is the mean of these (as bench/synthesis_bench.cpp does).
+const LEXICON_CALLS = 5;
 
 for (const flavour of FLAVOURS) {
   const core = await loadCore(flavour);
@@ -59,4 +69,35 @@ for (const flavour of FLAVOURS) {
   }
   const cpu = process.cpuUsage(cpu0);
   printResult(`synthesis_per_sign_wasm_cpu_${flavour}_${which}`, (cpu.user + cpu.system) / 1000 / 100, 'ms/sign');
+
+  // Every lexicon sign from rest and back: CPU ms per sign over LEXICON_CALLS calls each, after
+  // one warm-up call (the JIT has tiered up on the loops above already).
+  const ms = [];
+  const slowest = [];
+  for (const entry of LEXICON) {
+    const warm = core.synthCompile(avatar.id, entry.notation, {});
+    if (warm.error) throw new Error(`${entry.gloss}: ${warm.error}`);
+    core.synthClipFree(warm.id);
+    const start = process.cpuUsage();
+    for (let i = 0; i < LEXICON_CALLS; ++i) {
+      const clip = core.synthCompile(avatar.id, entry.notation, {});
+      core.synthClipFree(clip.id);
+    }
+    const used = process.cpuUsage(start);
+    const perSign = (used.user + used.system) / 1000 / LEXICON_CALLS;
+    ms.push(perSign);
+    slowest.push([perSign, entry.gloss]);
+  }
+  const mean = ms.reduce((a, b) => a + b, 0) / ms.length;
+  ms.sort((a, b) => a - b);
+  const at = (q) => ms[Math.min(ms.length - 1, Math.floor(q * ms.length))];
+  slowest.sort((a, b) => b[0] - a[0]);
+  for (const [t, gloss] of slowest.slice(0, 5)) {
+    process.stderr.write(`synthesis_lexicon_wasm_${flavour}: ${gloss} ${t.toFixed(2)} ms\n`);
+  }
+  printResult(`synthesis_lexicon_signs_wasm_${flavour}_${which}`, ms.length, 'signs');
+  printResult(`synthesis_lexicon_per_sign_mean_wasm_cpu_${flavour}_${which}`, mean, 'ms/sign');
+  printResult(`synthesis_lexicon_per_sign_median_wasm_cpu_${flavour}_${which}`, at(0.5), 'ms/sign');
+  printResult(`synthesis_lexicon_per_sign_p90_wasm_cpu_${flavour}_${which}`, at(0.9), 'ms/sign');
+  printResult(`synthesis_lexicon_per_sign_max_wasm_cpu_${flavour}_${which}`, ms[ms.length - 1], 'ms/sign');
 }

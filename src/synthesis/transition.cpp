@@ -239,20 +239,54 @@ void interpolate_direct(const glm::quat* a, const glm::quat* b, int joints, int 
   }
 }
 
+// With via-poses: each joint's direct slerp and each via's offset slerp from the identity set up
+// once for all the states (JointSlerp), the offsets right-multiplied and the sum normalised four
+// lanes at a time (math/quat_lanes.h): the same arithmetic on the same values as
+// normalize(slerp_shortest(a, b, e) * slerp_shortest(1, delta, w) * ...), bit-identical. The path
+// searches of plan_transition sample every via candidate several times (its length, its states,
+// their re-timing), so the acos and sines per joint per state were most of a routed sign's time.
 void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>& vias, int joints, int k,
                  std::vector<glm::quat>* out) {
   if (vias.empty()) return interpolate_direct(a, b, joints, k, out);
   out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
+  std::vector<JointSlerp> path, offsets;
+  path.reserve(static_cast<size_t>(joints));
+  for (int j = 0; j < joints; ++j) path.emplace_back(a[j], b[j]);
+  offsets.reserve(vias.size() * static_cast<size_t>(joints));
+  for (const Via& via : vias)
+    for (int j = 0; j < joints; ++j) offsets.emplace_back(glm::quat(1, 0, 0, 0), via.delta[static_cast<size_t>(j)]);
+  // A joint whose direct slerp and every via offset are constant (JointSlerp::constant: the same
+  // sample at every fraction > 0) has the same inputs, so the same result, at every state whose
+  // weights are > 0 for the same vias as the first state's: copied from it (interpolate_direct's
+  // rule, the offsets included).
+  std::vector<char> fixed(static_cast<size_t>(joints), 0);
+  for (int j = 0; j < joints; ++j) {
+    bool all = path[static_cast<size_t>(j)].constant;
+    for (size_t v = 0; all && v < vias.size(); ++v) all = offsets[v * static_cast<size_t>(joints) + j].constant;
+    fixed[static_cast<size_t>(j)] = all;
+  }
   std::vector<float> w(vias.size());
+  std::vector<char> first_weighted(vias.size(), 0);
+  float first_e = 0.0f;
   for (int i = 1; i < k; ++i) {
     float tau = static_cast<float>(i) / k;
     float e = minimum_jerk(tau);
     for (size_t v = 0; v < vias.size(); ++v) w[v] = via_weight(vias, v, tau);
+    bool as_first = i > 1 && e > 0.0f && first_e > 0.0f;
+    for (size_t v = 0; v < vias.size(); ++v) {
+      if (i == 1) first_weighted[v] = w[v] > 0.0f;
+      else as_first = as_first && (w[v] > 0.0f) == static_cast<bool>(first_weighted[v]);
+    }
+    if (i == 1) first_e = e;
     for (int j = 0; j < joints; ++j) {
-      glm::quat q = slerp_shortest(a[j], b[j], e);
+      if (as_first && fixed[static_cast<size_t>(j)]) {
+        (*out)[static_cast<size_t>(i - 1) * joints + j] = (*out)[static_cast<size_t>(j)];
+        continue;
+      }
+      math::lanes::Float4 q = path[j].at(e);
       for (size_t v = 0; v < vias.size(); ++v)
-        if (w[v] > 0.0f) q = q * slerp_shortest(glm::quat(1, 0, 0, 0), vias[v].delta[j], w[v]);
-      (*out)[static_cast<size_t>(i - 1) * joints + j] = glm::normalize(q);
+        if (w[v] > 0.0f) q = math::lanes::quat_mul(q, offsets[v * static_cast<size_t>(joints) + j].at(w[v]));
+      math::lanes::store4(&(*out)[static_cast<size_t>(i - 1) * joints + j], math::lanes::quat_normalize(q));
     }
   }
 }
@@ -343,11 +377,26 @@ float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sample
 struct KindDepths {
   float hand_m = 0.0f, arm_m = 0.0f;
 };
-KindDepths depths_by_kind(const SynthContext& ctx, const glm::quat* frames, int frame_count, const std::uint8_t* exempt) {
+// How much deeper than the floors (each kind's depth at the end poses) `d` goes: the kinds'
+// excesses added (plan_transition judges a routed path by it).
+float excess_over(const KindDepths& d, float hand_floor_m, float arm_floor_m) {
+  return std::max(0.0f, d.hand_m - hand_floor_m) + std::max(0.0f, d.arm_m - arm_floor_m);
+}
+
+// A bound past which the caller has no use for the depths: once the excess over the floors
+// exceeds `above_m` (the depths only grow frame by frame, and so does the excess), the rest of
+// the frames are not checked and the depths returned are the part measured, already past it.
+struct ExcessBound {
+  float hand_floor_m = 0.0f, arm_floor_m = 0.0f, above_m = 0.0f;
+};
+
+KindDepths depths_by_kind(const SynthContext& ctx, const glm::quat* frames, int frame_count, const std::uint8_t* exempt,
+                          const ExcessBound* bound = nullptr) {
   const Rig& rig = ctx.rig;
   KindDepths d;
   PoseBuilder pb(rig);
   for (int f = 0; f < frame_count; ++f) {
+    if (bound && excess_over(d, bound->hand_floor_m, bound->arm_floor_m) > bound->above_m) break;
     const glm::quat* frame = frames + static_cast<size_t>(f) * rig.joint_count;
     if (f > 0 && exempt[f] == exempt[f - 1] &&
         std::memcmp(frame, frame - rig.joint_count, sizeof(glm::quat) * rig.joint_count) == 0)
@@ -805,16 +854,30 @@ class HandChain {
         if (j >= 0) arm_joint_[static_cast<size_t>(j)] = true;
     direct_.reserve(static_cast<size_t>(rig.joint_count));
     for (int j = 0; j < rig.joint_count; ++j) direct_.emplace_back(from[j], to[j]);
+    // Each arm joint's slerp along each piece, set up once: the chain is sampled several times
+    // (its length, its states, their re-timing and the phases between them).
+    for (int j = 0; j < rig.joint_count; ++j) {
+      if (!arm_joint_[static_cast<size_t>(j)]) continue;
+      piece_joint_.push_back(j);
+      for (size_t p = 0; p + 1 < knots_.size(); ++p) pieces_.emplace_back(knots_[p][j], knots_[p + 1][j]);
+    }
+    piece_of_joint_.assign(static_cast<size_t>(rig.joint_count), -1);
+    for (size_t n = 0; n < piece_joint_.size(); ++n) piece_of_joint_[static_cast<size_t>(piece_joint_[n])] = static_cast<int>(n);
   }
   // The k-1 intermediate states (interpolate_chain's form).
   void sample(int k, std::vector<glm::quat>* out) const {
     const int J = rig_.joint_count;
     const size_t pieces = knots_.size() - 1;
+    // slerp_shortest(knots_[p][j], knots_[p + 1][j], ...) set up once (JointSlerp): bit-identical.
     auto piece = [&](size_t p, int j, float e) {
-      return slerp_shortest(knots_[p][j], knots_[p + 1][j], (e - u_[p]) / (u_[p + 1] - u_[p]));
+      const JointSlerp& path = pieces_[static_cast<size_t>(piece_of_joint_[static_cast<size_t>(j)]) * pieces + p];
+      glm::quat q;
+      math::lanes::store4(&q, path.at((e - u_[p]) / (u_[p + 1] - u_[p])));
+      return q;
     };
     auto fraction = [&](size_t p, float e) { return s_[p] + (e - u_[p]) / (u_[p + 1] - u_[p]) * (s_[p + 1] - s_[p]); };
     out->resize(static_cast<size_t>(std::max(0, k - 1)) * J);
+    float first_s = -1.0f;
     for (int i = 1; i < k; ++i) {
       const float e = minimum_jerk(static_cast<float>(i) / k);
       size_t seg = 0;
@@ -825,10 +888,16 @@ class HandChain {
       const float x = knot ? (e - (u_[knot] - half_[knot])) / (2.0f * half_[knot]) : 0.0f;
       const float fade = x * x * (3.0f - 2.0f * x);
       const float s = knot ? fraction(knot - 1, e) + fade * (fraction(knot, e) - fraction(knot - 1, e)) : fraction(seg, e);
+      if (i == 1) first_s = s;
       glm::quat* state = &(*out)[static_cast<size_t>(i - 1) * J];
       for (int j = 0; j < J; ++j) {
         if (!arm_joint_[static_cast<size_t>(j)]) {
-          math::lanes::store4(&state[j], direct_[static_cast<size_t>(j)].at(s));
+          // A joint that does not move (JointSlerp::constant) has the same sample at every s > 0
+          // (interpolate_direct's rule): copied from the first state.
+          if (i > 1 && s > 0.0f && first_s > 0.0f && direct_[static_cast<size_t>(j)].constant)
+            state[j] = (*out)[static_cast<size_t>(j)];
+          else
+            math::lanes::store4(&state[j], direct_[static_cast<size_t>(j)].at(s));
           continue;
         }
         const glm::quat q = knot ? slerp_shortest(piece(knot - 1, j, e), piece(knot, j, e), fade) : piece(seg, j, e);
@@ -843,6 +912,10 @@ class HandChain {
   std::vector<float> s_, u_, half_;
   std::vector<bool> arm_joint_;
   std::vector<JointSlerp> direct_;  // each joint's direct slerp, set up once
+  // The arm joints' slerps along the pieces: pieces_[n * pieces + p] for arm joint
+  // piece_joint_[n] (piece_of_joint_[j] = n), piece p.
+  std::vector<int> piece_joint_, piece_of_joint_;
+  std::vector<JointSlerp> pieces_;
 };
 
 // transition_path_m's measurement of the direct path, walked only as far as a question needs:
@@ -965,6 +1038,15 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   const AccelPoints accel_points = accel_point_list(rig);
   const size_t arms_n = accel_points.joints.size();
   std::vector<glm::vec3> arm_pos;
+  // What the end poses themselves have: a pass deeper than this, of either kind, is not taken
+  // (`deeper`), so once a pass's depth of one kind exceeds it the rest of its states' checks
+  // cannot change the outcome (depths only grow along the pass) and are skipped.
+  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
+  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
+  constexpr float kNothingAdded_m = 0.0005f;  // plan_transition's: sampling
+  const float hand_ceiling_m = std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m;
+  const float arm_ceiling_m = std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m;
+  auto is_deeper = [&](const KindDepths& d) { return d.hand_m > hand_ceiling_m || d.arm_m > arm_ceiling_m; };
   auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
     std::vector<glm::vec3> prev(J), cur(J);
@@ -986,6 +1068,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
       }
       std::swap(prev, cur);
       if (i == 0 || i == p.k || *step_m > abandon_step_m || finger_step_m > abandon_finger_step_m) continue;
+      if (is_deeper(*d)) continue;
       const std::uint8_t ex = p.exempt[static_cast<size_t>(i - 1)];
       for (int side_index = 0; side_index < 2; ++side_index) {
         const Side side = static_cast<Side>(side_index);
@@ -1033,11 +1116,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     stretch = std::sqrt(accel_mps2 / kArmPeakAccelMPerS2);
   }
   p.via_points = kHandPathWaypoints;
-  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
-  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
-  constexpr float kNothingAdded_m = 0.0005f;  // plan_transition's: sampling
-  if (d.hand_m > std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m ||
-      d.arm_m > std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m) {
+  if (is_deeper(d)) {
     *deeper = true;
     return false;
   }
@@ -1145,9 +1224,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const KindDepths to_depths = depths_by_kind(ctx, to, 1, &exempt_to);
   const float hand_floor_m = std::max(from_depths.hand_m, to_depths.hand_m);
   const float arm_floor_m = std::max(from_depths.arm_m, to_depths.arm_m);
-  auto excess_of = [&](const KindDepths& d) {
-    return std::max(0.0f, d.hand_m - hand_floor_m) + std::max(0.0f, d.arm_m - arm_floor_m);
-  };
+  auto excess_of = [&](const KindDepths& d) { return excess_over(d, hand_floor_m, arm_floor_m); };
   constexpr float kNothingAdded_m = 0.0005f;
   const KindDepths direct_depths = depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data());
   const float direct_excess = excess_of(direct_depths);
@@ -1178,6 +1255,13 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       push[s] = glm::normalize(arm.push_dir + rig.forward) * (arm.depth_m + 0.03f);
   }
   TransitionPlan best = plan;
+  // The candidate that adds least beyond the end poses wins (then the shallowest); the first
+  // within 5 mm, or adding nothing, is taken (consider, below).
+  float best_excess = direct_excess;
+  // A candidate whose excess is already past best_excess + 1e-4 part way along its states cannot
+  // win (consider's both tests fail, and the excess only grows): its remaining states are not
+  // checked (depths_by_kind's bound).
+  auto losing_bound = [&] { return ExcessBound{hand_floor_m, arm_floor_m, best_excess + 1e-4f}; };
   // A via-pose at time `tau` of the direct path: each pushed hand's wrist target moved by its
   // push, the arm re-solved by the arm IK with the body model (shoulder girdle included, so the
   // clavicle's protraction travels with the arm instead of being slerped apart from it);
@@ -1224,7 +1308,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       stretch_for_arm_accel(rig, from, to, fps, sample_vias, false, &p.k, &p.frames);
     }
     p.exempt = exempt_for(p.k);
-    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+    const ExcessBound bound = losing_bound();
+    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);
     out.second = excess_of(d);
     return out;
@@ -1244,7 +1329,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     if (hand_path_tried) {
       time_rest_path_by_arm(rig, from, to, fps, speed, sample, true, &p);
       p.exempt = exempt_for(p.k);
-      const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+      const ExcessBound bound = losing_bound();
+      const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
       p.max_penetration_m = std::max(d.hand_m, d.arm_m);
       result.second = excess_of(d);
       return result;
@@ -1265,14 +1351,12 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     }
     stretch_for_arm_accel(rig, from, to, fps, sample, true, &p.k, &p.frames);
     p.exempt = exempt_for(p.k);
-    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+    const ExcessBound bound = losing_bound();
+    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);
     result.second = excess_of(d);
     return result;
   };
-  // The candidate that adds least beyond the end poses wins (then the shallowest); the first
-  // within 5 mm, or adding nothing, is taken.
-  float best_excess = direct_excess;
   auto consider = [&](std::pair<TransitionPlan, float> c) {
     if (c.second < best_excess - 1e-4f ||
         (c.second <= best_excess + 1e-4f && c.first.max_penetration_m < best.max_penetration_m)) {
