@@ -625,12 +625,7 @@ bool turn_about_contact(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose, 
 }  // namespace
 
 bool turn_hand_out_of_body(const Rig& rig, Side side, ArmTarget* t, ArmPose* pose) {
-  // Only for a real conflict: the arm deeper in the trunk than the 5 mm rule allows, or the
-  // elbow clearly behind the body (a graze of a few mm is the swivel's and the per-frame fix's
-  // business; turning the hand 15 degrees for it would cost more than it saves).
-  if (!t->body) return false;
-  const float elbow_behind = pose->body_cost - arm_trunk_cost(pose->trunk_depth_m);
-  if (pose->trunk_depth_m <= 0.005f && elbow_behind <= 0.03f) return false;
+  if (!t->body || !arm_in_body_conflict(*pose)) return false;  // only for a real conflict
   return turn_about_contact(rig, side, t, pose, false);
 }
 

@@ -98,6 +98,15 @@ inline float arm_trunk_cost(float depth_m) { return 60.0f * (depth_m > 0.002f ? 
 
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& target);
 
+// A real conflict with the body, the one turn_hand_out_of_body acts on: the arm deeper in the
+// trunk than the 5 mm rule allows, or the elbow clearly behind the body (a graze of a few mm is
+// the swivel's and the per-frame fix's business; turning the hand 15 degrees for it would cost
+// more than it saves). Searches that would rather move the hand than turn it use the same test.
+inline bool arm_in_body_conflict(const ArmPose& p) {
+  const float elbow_behind = p.body_cost - arm_trunk_cost(p.trunk_depth_m);
+  return p.trunk_depth_m > 0.005f || elbow_behind > 0.03f;
+}
+
 // When even the best swivel leaves the arm in the trunk or the elbow behind the body (a fingertip
 // touching the chest or forehead with the fingers pointing into it puts the wrist inside), a
 // signer turns the hand about its contact point until the arm is free: the smallest turn

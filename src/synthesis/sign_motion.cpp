@@ -378,9 +378,7 @@ struct Solver {
         loc.contact == Contact::ArmExtended || loc.level == BodyLevel::NeutralSpace ||
         far_side_place(plan, loc) || far_side_beside(plan, loc))
       return;
-    auto in_conflict = [](const ArmPose& p) {
-      return p.trunk_depth_m > 0.005f || p.body_cost - arm_trunk_cost(p.trunk_depth_m) > 0.03f;
-    };
+    const auto in_conflict = arm_in_body_conflict;  // what turn_hand_out_of_body acts on
     if (!in_conflict(*best)) return;
     const glm::vec3 written = st->target;
     const glm::vec3 n = glm::normalize(anchor.normal);

@@ -142,10 +142,8 @@ TEST(SynthesisAlphabetOrientation, EveryLetterAndDigitHoldsItsPalmAndFingersWith
         const HandFrame requested =
             orientation_frame(rig, sign.dominant.orientation, kRight, false);
         const HandFrame posed = posed_hand_frame(rig, kRight, pose.delta(rig.arms[kRight].hand));
-        const float cos_palm = std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f);
-        const float palm_deg = testing::deg(std::acos(cos_palm));
-        const float cos_finger = std::clamp(glm::dot(requested.finger, posed.finger), -1.0f, 1.0f);
-        const float finger_deg = testing::deg(std::acos(cos_finger));
+        const float palm_deg = testing::angle_deg(requested.palm, posed.palm);
+        const float finger_deg = testing::angle_deg(requested.finger, posed.finger);
         const std::string key = std::string(file) + " " + rg.first + " " + e.letter;
         auto known = known_palm_deg.find(key);
         EXPECT_LE(palm_deg, known == known_palm_deg.end() ? 10.0f : known->second)
@@ -243,9 +241,9 @@ TEST(SynthesisLexiconOrientation, EverySignHoldsItsPalmWithin10DegreesAtItsKeyPo
         const HandFrame requested = orientation_frame(rig, h.spec->orientation, h.side, false);
         const HandFrame posed = posed_hand_frame(rig, h.side, pose.delta(rig.arms[h.side].hand));
         const float palm_deg =
-            testing::deg(std::acos(std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f)));
+            testing::angle_deg(requested.palm, posed.palm);
         const float finger_deg =
-            testing::deg(std::acos(std::clamp(glm::dot(requested.finger, posed.finger), -1.0f, 1.0f)));
+            testing::angle_deg(requested.finger, posed.finger);
         const std::string key = rg.first + " " + ls.gloss + " " + h.name;
         auto known = known_palm_deg.find(key);
         EXPECT_LE(palm_deg, known == known_palm_deg.end() ? 10.0f : known->second)

@@ -97,7 +97,7 @@ TEST(SynthesisLocation, AHandHeldOffMovesWithinTheBandRatherThanTurnOutOfTheBody
       PoseBuilder pose = frame_pose(rig, r.clip, first_sign_frame(r.clip));
       const HandFrame requested = orientation_frame(rig, sign.dominant.orientation, kRight, false);
       const HandFrame posed = posed_hand_frame(rig, kRight, pose.delta(rig.arms[kRight].hand));
-      const float palm_deg = deg(std::acos(std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f)));
+      const float palm_deg = angle_deg(requested.palm, posed.palm);
       EXPECT_LE(palm_deg, 10.0f) << rg.first << " " << text;
       ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
       EXPECT_GE(r.report.contact_distances_m[0], 0.03f) << rg.first << " " << text << ": held off, too near";
@@ -298,7 +298,7 @@ TEST(SynthesisLocation, BothHandsMeetWhereBothHoldTheirOrientationsOnBothRigs) {
       const notation::HandSpec& spec = side == kRight ? s.dominant : *s.nondominant;
       const HandFrame requested = orientation_frame(rig, spec.orientation, side, false);
       const HandFrame posed = posed_hand_frame(rig, side, pb.delta(rig.arms[side].hand));
-      EXPECT_LE(deg(std::acos(std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f))), 10.0f)
+      EXPECT_LE(angle_deg(requested.palm, posed.palm), 10.0f)
           << rg.first << (side == kRight ? " right" : " left") << " palm";
     }
     const PartPoint palm = hand_part(pb, kLeft, notation::HandPlace::Palm, 1);
@@ -330,7 +330,7 @@ TEST(SynthesisLocation, AHandAcrossTheBodyPalmUpInNeutralSpaceHoldsItsPalmOnBoth
     PoseBuilder pb = frame_pose(rig, r.clip, first_sign_frame(r.clip));
     const HandFrame requested = orientation_frame(rig, s.nondominant->orientation, kLeft, false);
     const HandFrame posed = posed_hand_frame(rig, kLeft, pb.delta(rig.arms[kLeft].hand));
-    EXPECT_LE(deg(std::acos(std::clamp(glm::dot(requested.palm, posed.palm), -1.0f, 1.0f))), 10.0f)
+    EXPECT_LE(angle_deg(requested.palm, posed.palm), 10.0f)
         << rg.first << ": the left palm";
     EXPECT_LE(r.report.max_penetration_m, 0.005f) << rg.first;
   }

@@ -2,6 +2,7 @@
 // axes and size (synthesis must work on ANY humanoid), sign builders and pose measurements.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -130,6 +131,11 @@ inline int first_sign_frame(const Clip& clip) {
 }
 
 inline float deg(float rad) { return rad * 57.2957795f; }
+// The angle between two unit directions (a requested and a posed palm normal or finger
+// direction), in degrees.
+inline float angle_deg(const glm::vec3& a, const glm::vec3& b) {
+  return deg(std::acos(std::clamp(glm::dot(a, b), -1.0f, 1.0f)));
+}
 
 // The project's avatar (models/signweave-avatar.glb) for tests that run on it beside the
 // procedural rigs. A checkout without the model: not present, no error; a model the loader
