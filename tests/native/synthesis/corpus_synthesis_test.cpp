@@ -4,9 +4,11 @@
 // exercises places, movements and hand pairs they do not. Read from SIGNWEAVE_SHARED_DIR, never
 // copied into the repository; skipped, saying so, where the corpus or the avatar is absent.
 //
-// Sampled: every kSampleStride-th clean sign (in file order), synthesised once for both tests
-// (about 15 s natively for the half, 31-39 s for all 4,433 on the shared 2-core machine); set
-// SIGNWEAVE_CORPUS_FULL=1 to synthesise every one. `signweave check` gives the full figures.
+// Sampled: every kSampleStride-th clean sign (in file order), synthesised once per process for
+// both tests (about 10-15 s natively for the half, 31-39 s for all 4,433 on the shared 2-core
+// machine; ctest runs each test in its own process, so there each pays it: 9-12 s natively,
+// about 200 s under ASan+UBSan); set SIGNWEAVE_CORPUS_FULL=1 to synthesise every one.
+// `signweave check` gives the full figures.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -70,7 +72,7 @@ struct CorpusSample {
   std::vector<SampledSign> signs;
 };
 
-// Synthesised once per test binary run: both tests read the same clips' results.
+// Synthesised once per process: both tests read the same clips' results when run together.
 const CorpusSample& corpus_sample() {
   static const CorpusSample sample = [] {
     CorpusSample s;
