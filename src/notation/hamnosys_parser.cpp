@@ -1,6 +1,7 @@
 // Reader of HamNoSys 4 (see hamnosys.h for the grammar). Symbols -> SignSpec, recovering from
 // unknown symbols and unbalanced brackets with a diagnostic each.
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include "notation/formula.h"
@@ -66,6 +67,10 @@ struct LocationPart {
   bool has_place = false;     // a place on a hand / arm
   Location location;          // level/side or place (kind set accordingly)
   bool part_only = false;     // only a hand part (digit/part symbols) with no body level
+  // The part of THIS hand that makes the contact, from a bracket after the place
+  // (read_contact_bracket): "hamearlobe hamseqbegin hamtouch hamthumb hamfingernail hamseqend".
+  std::optional<HandPlace> bracket_part;
+  std::int8_t bracket_finger = -1;
 };
 
 class Reader {
@@ -388,6 +393,9 @@ class Reader {
           break;
         }
         continue;
+      } else if (c == hamseqbegin && (out->has_level || out->has_place) && is_contact_bracket(i, end)) {
+        i = read_contact_bracket(i, out, contact, has_contact);
+        break;
       } else if ((c == hamseqbegin && i + 1 < end && is_location_start(s_[i + 1].code)) || c == hamseqend) {
         // A sequence of places inside a location (contact along the way): read through.
       } else {
@@ -405,6 +413,53 @@ class Reader {
     }
     out->part_only = out->has_place && !out->has_level;
     return i;
+  }
+
+  // HamNoSys 4 writes the part of the hand that makes a contact in brackets after the place:
+  // place hamseqbegin contact [digits] part [side] hamseqend (an earring: "hamearlobe hamlrat
+  // [hamtouch hamthumb hamindexfinger hamfingernail hampalm]", the thumb and index nails touch
+  // the earlobe). SiGML writes the same as a location_bodyarm with a location_hand child (the
+  // corpus's NGT file: location_bodyarm contact="touch" location="shoulders" with location_hand
+  // digits="2" location="midjoint" side="dorsal"). Read as a movement to the hand part, it sent
+  // one-handed signs to the resting hand (the real-sign corpus, 176 brackets after a side mark
+  // alone). Only a contact followed by hand-part symbols is such a bracket; a bracket with a body
+  // place or a movement inside ("[hambrushing hamchin hamtouch]") is a path and read as before.
+  bool is_contact_bracket(std::size_t i, std::size_t end) const {
+    const std::size_t close = match_[i];
+    if (close >= end || close < i + 3 || !in_group(s_[i + 1].code, HamGroup::Contact)) return false;
+    bool part = false;
+    for (std::size_t k = i + 2; k < close; ++k) {
+      // hamlrat / hamlrbeside: the side of the part ("[hamtouch hamlrbeside hamwristback]").
+      if (s_[k].code == hamlrat || s_[k].code == hamlrbeside) continue;
+      if (!is_hand_place(s_[k].code)) return false;
+      part = true;
+    }
+    return part;
+  }
+  // Reads the bracket is_contact_bracket accepted; returns the index after its hamseqend. The
+  // first digit names the finger (a second one, "hamthumb hamindexfinger", is read and dropped:
+  // Location has one contact finger); a second part after a finger part is the side of it
+  // (hampalm: palmar, hamhandback: dorsal, SiGML side="palmar"/"dorsal") and is not kept.
+  std::size_t read_contact_bracket(std::size_t i, LocationPart* out, Contact* contact, bool* has_contact) {
+    const std::size_t close = match_[i];
+    *contact = contact_of(s_[i + 1].code);
+    *has_contact = true;
+    int finger = -1;
+    std::optional<HandPlace> part;
+    for (std::size_t k = i + 2; k < close; ++k) {
+      const char32_t c = s_[k].code;
+      if (c >= hamthumb && c <= hampinky) {
+        if (finger < 0) finger = static_cast<int>(c - hamthumb);
+      } else if (c == hamlrat || c == hamlrbeside) {
+        // the side of the part: Location has no field for it
+      } else if (!part) {
+        part = place_of(c);
+      }
+    }
+    if (!part) part = HandPlace::Fingertip;  // a finger alone: its tip (as read_location_part)
+    out->bracket_part = part;
+    out->bracket_finger = static_cast<std::int8_t>(finger);
+    return close + 1;
   }
 
   // A whole location (single or hamparbegin a hamplus b hamparend) applied to the sign's hands.
@@ -456,6 +511,10 @@ class Reader {
           *nondominant_set = true;
         }
       }
+      if (a.bracket_part) {
+        dominant->contact_part = a.bracket_part;
+        dominant->contact_finger = a.bracket_finger;
+      }
       if (ha) contact = ca;
       if (i < end && in_group(s_[i].code, HamGroup::Contact)) {
         contact = contact_of(s_[i].code);
@@ -478,6 +537,10 @@ class Reader {
         *dominant = body;
       } else {
         *dominant = a.location;
+      }
+      if (a.bracket_part) {  // the bracket names this hand's part: it wins over a part before the place
+        dominant->contact_part = a.bracket_part;
+        dominant->contact_finger = a.bracket_finger;
       }
     }
     dominant->contact = has_contact ? contact : (a.has_level || a.has_place ? Contact::None : dominant->contact);

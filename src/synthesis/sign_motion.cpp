@@ -1158,16 +1158,6 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
     n.steps.push_back(sign.nondominant_is_place ? std::vector<Movement>{} : nd);
     for (const auto& m : step.dominant) n.alternating = n.alternating || m.alternating;
   }
-  // A one-handed sign has no other hand to move to. HamNoSys writes the parts of the hand that
-  // make a contact in brackets after the place (an earring: earlobe [touch thumb, index nail]);
-  // read as a movement to "the other hand's palm / fingertip" (the reader's target), it sent the
-  // hand from the ear down to the resting hand by the hip, the forearm through the torso on the
-  // way (the real-sign corpus: about a third of its signs over 5 mm, up to 12 cm). The hand
-  // keeps its written place and contact for the movement's time instead.
-  if (!n.active)
-    for (auto& step : d.steps)
-      for (auto& m : step)
-        if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) m.to_location.reset();
   for (auto& p : plans) {
     const Location& loc = p.spec.location;
     if (loc.kind == Location::Kind::OtherHand) {

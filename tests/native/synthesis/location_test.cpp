@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "notation/hamnosys.h"
 #include "synthesis/arm_ik.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/orientation.h"
@@ -201,6 +202,37 @@ TEST(SynthesisLocation, OtherHandIsThePlace) {
   PartPoint palm = hand_part(pb, kLeft, notation::HandPlace::Palm, 1);
   EXPECT_LT(glm::length(tip - palm.point), 0.01f);
   EXPECT_LE(r.report.max_penetration_m, 0.005f);
+}
+
+// An earring-like sign read from HamNoSys: the index nail touches the earlobe, the part named in
+// brackets after the place (HamNoSys 4; SiGML's location_bodyarm with a location_hand child).
+// The reader made the bracket a movement to the other hand, and make_plans dropped that target
+// for one-handed signs (the hand stayed at the ear with its default part). Read as the contact
+// part, the synthesis places the nail itself on the earlobe: within 1 cm (issue 4's reach).
+TEST(SynthesisLocation, ABracketedContactPartReachesTheEarlobeFromHamNoSys) {
+  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(
+      "hampinch12,hamextfingeru,hampalml,hamearlobe,hamlrat,"
+      "hamseqbegin,hamtouch,hamindexfinger,hamfingernail,hamseqend");
+  ASSERT_EQ(read.size(), 1u);
+  ASSERT_TRUE(read[0].ok() && read[0].spec);
+  const notation::SignSpec& s = *read[0].spec;
+  ASSERT_TRUE(s.dominant.location.contact_part.has_value());
+  for (int variant = 0; variant < 2; ++variant) {
+    avatar::Avatar av = variant == 0 ? make_reference_humanoid() : make_rotated_variant(0.9f);
+    Rig rig;
+    std::string error;
+    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+    SynthesisResult r = synthesize_sign(s, av);
+    ASSERT_TRUE(r.ok()) << r.errors[0].message;
+    PoseBuilder pb = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+    PartPoint earlobe;
+    ASSERT_TRUE(anchor_point(av, pb, "body/ears/right", &earlobe));
+    const PartPoint nail = hand_part(pb, kRight, notation::HandPlace::FingerNail, 1);
+    EXPECT_LT(glm::length(nail.point - earlobe.point), 0.01f) << "variant " << variant;
+    ASSERT_EQ(r.report.contact_distances_m.size(), 1u);
+    EXPECT_LT(r.report.contact_distances_m[0], 0.01f) << "variant " << variant;
+    EXPECT_LE(r.report.max_penetration_m, 0.005f) << "variant " << variant;
+  }
 }
 
 // A symmetric sign whose hands are each written on the other, with no location symbol

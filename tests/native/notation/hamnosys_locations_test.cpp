@@ -1,0 +1,98 @@
+// Tests of the HamNoSys reader's locations (src/notation/hamnosys.h) on hand-written signs: the
+// bracketed part of the hand that makes a contact, symmetric pairs whose hands touch each other,
+// and a hand constellation placed at a body location. Each was a fault the real-sign corpus
+// showed (docs/NOTATION.md, "Locations as real corpora write them").
+#include "notation/hamnosys.h"
+
+#include <gtest/gtest.h>
+
+#include "notation/sign_spec_json.h"
+#include "notation/text_position.h"
+
+namespace sw::notation {
+namespace {
+
+SignSpec read_clean(const std::string& text) {
+  std::vector<SignParse> v = parse_hamnosys_text(text);
+  EXPECT_EQ(v.size(), 1u);
+  if (v.empty()) return {};
+  EXPECT_TRUE(v[0].ok()) << (v[0].diagnostics.empty() ? "no sign" : format_diagnostic(v[0].diagnostics[0]));
+  return v[0].spec ? *v[0].spec : SignSpec{};
+}
+
+// Printed (both spellings) and read again: the same SignSpec.
+void expect_round_trip(const SignSpec& s) {
+  for (HamNoSysSpelling spelling : {HamNoSysSpelling::Unicode, HamNoSysSpelling::Names}) {
+    const std::string printed = print_hamnosys(s, spelling);
+    const std::vector<SignParse> again = parse_hamnosys_text(printed);
+    ASSERT_EQ(again.size(), 1u);
+    ASSERT_TRUE(again[0].ok()) << printed;
+    EXPECT_EQ(sign_to_json_text(*again[0].spec), sign_to_json_text(s)) << printed;
+  }
+}
+
+bool any_target_on_the_other_hand(const SignSpec& s) {
+  for (const MovementStep& step : s.movements)
+    for (const Movement& m : step.dominant)
+      if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) return true;
+  return false;
+}
+
+// HamNoSys 4 writes the part of the hand that makes the contact in brackets after the place
+// (hamseqbegin contact digits part hamseqend); SiGML writes it as a location_bodyarm with a
+// location_hand child. It was read as a movement to the other hand: a one-handed sign reached
+// for the resting hand by the hip.
+TEST(HamNoSysLocations, ABracketAfterThePlaceNamesThePartOfTheHandThatTouches) {
+  const SignSpec s = read_clean(
+      "hamfinger2,hamextfingeru,hampalml,hamcheek,hamlrat,"
+      "hamseqbegin,hamtouch,hamindexfinger,hamfingernail,hamseqend");
+  EXPECT_FALSE(s.nondominant.has_value());
+  EXPECT_FALSE(s.nondominant_is_place);
+  const Location& l = s.dominant.location;
+  EXPECT_EQ(l.kind, Location::Kind::Body);
+  EXPECT_EQ(l.level, BodyLevel::Cheeks);
+  EXPECT_EQ(l.side, Side::Right);
+  EXPECT_EQ(l.contact, Contact::Touch);
+  ASSERT_TRUE(l.contact_part.has_value());
+  EXPECT_EQ(*l.contact_part, HandPlace::FingerNail);
+  EXPECT_EQ(l.contact_finger, static_cast<int>(Finger::Index));
+  EXPECT_TRUE(s.movements.empty()) << "the bracket was read as a movement";
+  expect_round_trip(s);
+}
+
+// Two digits (the thumb and index together) keep the first; a part after the finger part is
+// the side of it (hampalm: palmar, SiGML side="palmar") and does not replace it; a movement
+// after the bracket keeps the written place.
+TEST(HamNoSysLocations, ABracketWithTwoDigitsAndASideThenAMovement) {
+  const SignSpec s = read_clean(
+      "hampinch12,hamextfingeru,hampalml,hamchin,"
+      "hamseqbegin,hamclose,hamthumb,hamindexfinger,hamfingertip,hampalm,hamseqend,hammoved,hamsmallmod");
+  const Location& l = s.dominant.location;
+  EXPECT_EQ(l.level, BodyLevel::Chin);
+  EXPECT_EQ(l.contact, Contact::Close);
+  ASSERT_TRUE(l.contact_part.has_value());
+  EXPECT_EQ(*l.contact_part, HandPlace::Fingertip);
+  EXPECT_EQ(l.contact_finger, static_cast<int>(Finger::Thumb));
+  ASSERT_EQ(s.movements.size(), 1u);
+  EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Straight);
+  EXPECT_FALSE(any_target_on_the_other_hand(s));
+  expect_round_trip(s);
+}
+
+// A bracket whose inside is a path (a contact on the way at a body place) is not a hand part:
+// it stays what it was, a move to that place after the movement before it.
+TEST(HamNoSysLocations, ABracketWithABodyPlaceInsideIsStillAPath) {
+  const SignSpec s = read_clean(
+      "hamfinger2,hamextfingerul,hampalmd,hamcheek,hamlrat,hamclose,"
+      "hammoved,hamseqbegin,hambrushing,hamchin,hamtouch,hamseqend");
+  EXPECT_FALSE(s.dominant.location.contact_part.has_value());
+  EXPECT_EQ(s.dominant.location.contact, Contact::Close);
+  ASSERT_EQ(s.movements.size(), 2u);
+  EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Straight);
+  ASSERT_TRUE(s.movements[1].dominant[0].to_location.has_value());
+  EXPECT_EQ(s.movements[1].dominant[0].to_location->level, BodyLevel::Chin);
+  EXPECT_FALSE(any_target_on_the_other_hand(s));
+}
+
+}  // namespace
+}  // namespace sw::notation
