@@ -154,7 +154,13 @@ class Reader {
         for (Movement& m : step.nondominant) m.alternating = true;
       }
     }
-    if (sign->dominant.location.kind == Location::Kind::OtherHand) sign->nondominant_is_place = true;
+    // The other hand is a still place only without a symmetry operator (HamNoSys 4: the
+    // non-dominant hand given as the place, "hamnondominant" / a hand constellation). With one,
+    // both hands make the movements, the non-dominant hand mirrored, and the contact is between
+    // them (the real-sign corpus, TO-MIX3: both hands circle against each other; read as a
+    // place, one hand circled on a still one: 157 of its signs).
+    if (sign->dominant.location.kind == Location::Kind::OtherHand && sign->symmetry == Symmetry::None)
+      sign->nondominant_is_place = true;
     return true;
   }
 

@@ -1115,6 +1115,18 @@ bool meet_where_both_hands_hold(Solver& solver, const HandPlan& plan, const Hand
   return true;
 }
 
+// A symmetric pair whose dominant hand is on the other (HamNoSys: a symmetry operator and a
+// hand contact, hamnosys_parser.cpp; ROUND-BALL2: flat hands palm on palm, both moving) moves
+// both hands, the other hand with the dominant hand's movements mirrored. A target on "the other
+// hand" among those (the touch at the end of the movement) is the dominant hand's contact with
+// the other: the dominant hand keeps it, being placed on the other hand. Copied to the other hand
+// it asked each hand to go to the other, each placed relative to the other (the corpus: 19 signs
+// deeper, up to 117 mm). The copy keeps the movement and drops that target.
+void keep_pair_contact_on_the_dominant_hand(std::vector<Movement>* copied) {
+  for (Movement& m : *copied)
+    if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) m.to_location.reset();
+}
+
 std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::SignSpec& sign) {
   const bool lh = ctx.options.left_handed;
   const Side dom = lh ? kLeft : kRight;
@@ -1148,9 +1160,10 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   for (const auto& step : sign.movements) {
     d.steps.push_back(step.dominant);
     std::vector<Movement> nd = step.nondominant;
-    if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place) nd = step.dominant;
-    if (nd.empty() && sym != Symmetry::None && sign.nondominant && !sign.nondominant_is_place)
+    if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place) {
       nd = step.dominant;
+      if (sign.dominant.location.kind == Location::Kind::OtherHand) keep_pair_contact_on_the_dominant_hand(&nd);
+    }
     if (!step.nondominant.empty()) {
       // Written for the non-dominant hand itself: only the signer's handedness mirrors it.
       n.move_mirror = MirrorAxes{lh, false, false};

@@ -94,5 +94,32 @@ TEST(HamNoSysLocations, ABracketWithABodyPlaceInsideIsStillAPath) {
   EXPECT_FALSE(any_target_on_the_other_hand(s));
 }
 
+// A symmetric pair whose hands touch each other (hamsymmlr, the dominant hand's back on the other
+// palm, circling): both hands make the movement, the non-dominant one mirrored. It was read with
+// nondominant_is_place, so one hand circled on a still one.
+TEST(HamNoSysLocations, ASymmetricPairOnEachOtherMovesBothHands) {
+  const SignSpec s = read_clean("hamsymmlr,hamflathand,hamextfingero,hampalmd,hamhandback,hamtouch,hamcirclei");
+  EXPECT_EQ(s.symmetry, Symmetry::MirrorLR);
+  EXPECT_EQ(s.dominant.location.kind, Location::Kind::OtherHand);
+  EXPECT_EQ(s.dominant.location.hand_place, HandPlace::BackOfHand);
+  EXPECT_FALSE(s.nondominant_is_place);
+  ASSERT_EQ(s.movements.size(), 1u);
+  EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Circle);
+  EXPECT_TRUE(s.movements[0].nondominant.empty());  // follows the symmetry
+  expect_round_trip(s);
+}
+
+// Without a symmetry operator the other hand given as the place stays still: the dominant
+// index tip on the other palm, the non-dominant hand configured with hamplus.
+TEST(HamNoSysLocations, WithoutSymmetryTheOtherHandIsAStillPlace) {
+  const SignSpec s = read_clean(
+      "hamparbegin,hamfinger2,hamextfingerol,hampalmd,hamplus,hamflathand,hamextfingeror,hampalmu,hamparend,"
+      "hampalm,hamtouch,hammoveo");
+  EXPECT_EQ(s.symmetry, Symmetry::None);
+  EXPECT_EQ(s.dominant.location.kind, Location::Kind::OtherHand);
+  EXPECT_TRUE(s.nondominant_is_place);
+  expect_round_trip(s);
+}
+
 }  // namespace
 }  // namespace sw::notation

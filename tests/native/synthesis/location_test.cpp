@@ -268,7 +268,9 @@ TEST(SynthesisLocation, HandsWrittenEachOnTheOtherMeetInNeutralSpaceOnBothRigs) 
     s.dominant.orientation.extended_finger = pair.fingers;
     s.dominant.orientation.palm = pair.palm;
     s.symmetry = notation::Symmetry::MirrorLR;
-    s.nondominant_is_place = true;  // as the HamNoSys reader writes such a sign
+    // As the HamNoSys reader writes such a sign: with a symmetry operator both hands move, the
+    // other hand is not a still place.
+    s.nondominant_is_place = false;
     for (const auto& rg : rigs) {
       for (bool left_handed : {false, true}) {
         const std::string what = rg.first + ", " + pair.name + (left_handed ? ", left-handed" : "");
