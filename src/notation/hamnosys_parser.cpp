@@ -557,11 +557,55 @@ class Reader {
     Location nd;
     bool nd_set = false;
     i = read_location(i, end, &sign->dominant.location, &nd, &nd_set);
+    if (!nd_set && sign->dominant.location.kind == Location::Kind::OtherHand)
+      i = read_constellation_place(i, end, &nd, &nd_set);
     if (nd_set) {
-      if (!sign->nondominant) sign->nondominant = sign->dominant;
+      if (!sign->nondominant) sign->nondominant = nondominant_copy(*sign);
       sign->nondominant->location = nd;
     }
     return i;
+  }
+
+  // A hand constellation (the dominant hand's part at a place on the other hand) followed by a
+  // body location: the pair is made there ("hamparbegin hampalm hamplus hamhandback hamparend
+  // hamclose hamshoulders": the palm close to the other hand's back, at the shoulders). SiGML
+  // writes it as a handconstellation with a location_bodyarm child, which gsigml_reader.cpp
+  // gives the non-dominant hand (the place) as its location; so does this. It was read as a
+  // first movement to that body location (the corpus's TO-TELL1, HEART2A, TO-READ1C, CURTAIN2).
+  // Returns the index after the body location, or i when none follows.
+  std::size_t read_constellation_place(std::size_t i, std::size_t end, Location* nd, bool* nd_set) {
+    if (i >= end) return i;
+    const char32_t c = s_[i].code;
+    const bool body = is_body_level(c) || c == hamneutralspace ||
+                      ((c == hamlrat || c == hamlrbeside) && i + 1 < end && is_body_level(s_[i + 1].code));
+    if (!body) return i;
+    LocationPart where;
+    Contact contact = Contact::None;
+    bool has_contact = false;
+    const std::size_t next = read_location_part(i, end, &where, &contact, &has_contact);
+    if (!where.has_level || where.has_place) return i;
+    *nd = where.location;
+    nd->contact = has_contact ? contact : Contact::None;
+    *nd_set = true;
+    return next;
+  }
+
+  // The non-dominant hand as the dominant hand has it, for a sign that gives the non-dominant
+  // hand only a location: under a mirror symmetry its orientation is the dominant one mirrored
+  // (written for the left hand, as a hamplus configuration is), so the copy does not turn the
+  // left palm the way the right one faces.
+  static HandSpec nondominant_copy(const SignSpec& sign) {
+    HandSpec nd = sign.dominant;
+    const Symmetry m = sign.symmetry;
+    const bool x = m == Symmetry::MirrorLR || m == Symmetry::MirrorLRUD || m == Symmetry::MirrorLRIO;
+    const bool y = m == Symmetry::MirrorLRUD || m == Symmetry::ParallelUD;
+    const bool z = m == Symmetry::MirrorLRIO || m == Symmetry::ParallelIO;
+    for (Direction* d : {&nd.orientation.extended_finger, &nd.orientation.palm}) {
+      if (x) d->x = static_cast<std::int8_t>(-d->x);
+      if (y) d->y = static_cast<std::int8_t>(-d->y);
+      if (z) d->z = static_cast<std::int8_t>(-d->z);
+    }
+    return nd;
   }
 
   // ---- actions

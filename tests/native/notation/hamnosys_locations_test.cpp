@@ -121,5 +121,40 @@ TEST(HamNoSysLocations, WithoutSymmetryTheOtherHandIsAStillPlace) {
   expect_round_trip(s);
 }
 
+// A hand constellation made at a body location: "(palm + back of hand) close, at the chest".
+// The body location is where the pair is (SiGML: a handconstellation with a location_bodyarm
+// child), given to the non-dominant hand, the place; it was read as a first movement there.
+TEST(HamNoSysLocations, AConstellationAtABodyLocationIsThePairsPlaceNotAMovement) {
+  const SignSpec s = read_clean(
+      "hamsymmlr,hamflathand,hamextfingerol,hampalmd,"
+      "hamparbegin,hampalm,hamplus,hamhandback,hamparend,hamclose,hamchest,hamcircleo");
+  EXPECT_EQ(s.dominant.location.kind, Location::Kind::OtherHand);
+  EXPECT_EQ(s.dominant.location.hand_place, HandPlace::BackOfHand);
+  ASSERT_TRUE(s.dominant.location.contact_part.has_value());
+  EXPECT_EQ(*s.dominant.location.contact_part, HandPlace::Palm);
+  EXPECT_EQ(s.dominant.location.contact, Contact::Close);
+  ASSERT_TRUE(s.nondominant.has_value());
+  EXPECT_EQ(s.nondominant->location.kind, Location::Kind::Body);
+  EXPECT_EQ(s.nondominant->location.level, BodyLevel::Chest);
+  // Under hamsymmlr the non-dominant hand is the dominant one mirrored left-right.
+  EXPECT_EQ(s.nondominant->orientation.extended_finger, (Direction{-1, 0, 1}));
+  EXPECT_EQ(s.nondominant->orientation.palm, (Direction{0, -1, 0}));
+  ASSERT_EQ(s.movements.size(), 1u) << "the body location was read as a movement";
+  EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Circle);
+  expect_round_trip(s);
+
+  // A single place on the other hand with its contact, then the body location and its contact.
+  const SignSpec t = read_clean(
+      "hamsymmlr,hamfinger2,hamextfingerl,hampalmd,hamfingertip,hamtouch,hamlrat,hamchest,hamtouch,hammoved");
+  EXPECT_EQ(t.dominant.location.kind, Location::Kind::OtherHand);
+  ASSERT_TRUE(t.nondominant.has_value());
+  EXPECT_EQ(t.nondominant->location.level, BodyLevel::Chest);
+  EXPECT_EQ(t.nondominant->location.side, Side::Left);
+  EXPECT_EQ(t.nondominant->location.contact, Contact::Touch);
+  ASSERT_EQ(t.movements.size(), 1u);
+  EXPECT_FALSE(t.movements[0].dominant[0].to_location.has_value());
+  expect_round_trip(t);
+}
+
 }  // namespace
 }  // namespace sw::notation
