@@ -1115,6 +1115,14 @@ bool meet_where_both_hands_hold(Solver& solver, const HandPlan& plan, const Hand
   return true;
 }
 
+// Whether a hand's movements take it to a place on the other hand or arm.
+bool moves_to_the_other_hand(const HandPlan& plan) {
+  for (const auto& step : plan.steps)
+    for (const auto& m : step)
+      if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) return true;
+  return false;
+}
+
 // A symmetric pair whose dominant hand is on the other (HamNoSys: a symmetry operator and a
 // hand contact, hamnosys_parser.cpp; ROUND-BALL2: flat hands palm on palm, both moving) moves
 // both hands, the other hand with the dominant hand's movements mirrored. A target on "the other
@@ -1405,8 +1413,10 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   Solver solver(ctx, errors, where);
   std::array<HandPlan, 2> plans = make_plans(ctx, sign);
   if (plans[0].on_other_hand && plans[1].on_other_hand) place_pair_in_neutral_space(&plans[1], plans[0]);
-  if (plans[0].on_other_hand && !plans[1].active) {
-    // A place on the other hand needs that hand: hold it in neutral space, palm up.
+  if ((plans[0].on_other_hand || moves_to_the_other_hand(plans[0])) && !plans[1].active) {
+    // A place on the other hand needs that hand: hold it in neutral space, palm up. So does a
+    // one-handed sign that moves to it (the corpus's INJECTION1A: into the crook of the other
+    // elbow; NGT BLOED_AFNEMEN), which make_plans no longer drops (the reader's brackets).
     plans[1].active = true;
     plans[1].spec = notation::HandSpec{};
     plans[1].spec.orientation.extended_finger = {1, 0, 1};

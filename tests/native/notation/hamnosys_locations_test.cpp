@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "notation/sigml.h"
 #include "notation/sign_spec_json.h"
 #include "notation/text_position.h"
 
@@ -20,14 +21,30 @@ SignSpec read_clean(const std::string& text) {
   return v[0].spec ? *v[0].spec : SignSpec{};
 }
 
-// Printed (both spellings) and read again: the same SignSpec.
-void expect_round_trip(const SignSpec& s) {
+// Printed (both spellings, and as H-SiGML and G-SiGML) and read again: the same SignSpec.
+// `gsigml` false: a sign G-SiGML cannot say exactly (below), or a symmetric pair on each other,
+// which gsigml_reader.cpp still reads with nondominant_is_place (changed like this reader, the
+// NGT corpus had 20 more signs over 5 mm: open, see docs/NOTATION.md).
+void expect_round_trip(const SignSpec& s, bool gsigml = true) {
   for (HamNoSysSpelling spelling : {HamNoSysSpelling::Unicode, HamNoSysSpelling::Names}) {
     const std::string printed = print_hamnosys(s, spelling);
     const std::vector<SignParse> again = parse_hamnosys_text(printed);
     ASSERT_EQ(again.size(), 1u);
     ASSERT_TRUE(again[0].ok()) << printed;
     EXPECT_EQ(sign_to_json_text(*again[0].spec), sign_to_json_text(s)) << printed;
+  }
+  // And through both SiGML printers (H-SiGML is read by this reader; G-SiGML by its own, which
+  // writes the bracket as a location_bodyarm's location_hand and the constellation's place as a
+  // handconstellation's location_bodyarm).
+  std::vector<std::string> sigml = {print_hsigml({s})};
+  if (gsigml) sigml.push_back(print_gsigml({s}));
+  for (const std::string& printed : sigml) {
+    const std::vector<SignParse> again = parse_sigml_text(printed);
+    ASSERT_EQ(again.size(), 1u);
+    ASSERT_TRUE(again[0].ok()) << printed;
+    SignSpec back = *again[0].spec;
+    back.gloss = s.gloss;
+    EXPECT_EQ(sign_to_json_text(back), sign_to_json_text(s)) << printed;
   }
 }
 
@@ -106,7 +123,7 @@ TEST(HamNoSysLocations, ASymmetricPairOnEachOtherMovesBothHands) {
   ASSERT_EQ(s.movements.size(), 1u);
   EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Circle);
   EXPECT_TRUE(s.movements[0].nondominant.empty());  // follows the symmetry
-  expect_round_trip(s);
+  expect_round_trip(s, false);
 }
 
 // Without a symmetry operator the other hand given as the place stays still: the dominant
@@ -141,7 +158,7 @@ TEST(HamNoSysLocations, AConstellationAtABodyLocationIsThePairsPlaceNotAMovement
   EXPECT_EQ(s.nondominant->orientation.palm, (Direction{0, -1, 0}));
   ASSERT_EQ(s.movements.size(), 1u) << "the body location was read as a movement";
   EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Circle);
-  expect_round_trip(s);
+  expect_round_trip(s, false);
 
   // A single place on the other hand with its contact, then the body location and its contact.
   const SignSpec t = read_clean(
@@ -153,7 +170,9 @@ TEST(HamNoSysLocations, AConstellationAtABodyLocationIsThePairsPlaceNotAMovement
   EXPECT_EQ(t.nondominant->location.contact, Contact::Touch);
   ASSERT_EQ(t.movements.size(), 1u);
   EXPECT_FALSE(t.movements[0].dominant[0].to_location.has_value());
-  expect_round_trip(t);
+  // G-SiGML's handconstellation names a part of each hand: a place with no part of this hand is
+  // printed with the palm (gsigml_printer.cpp), so only HamNoSys and H-SiGML give it back exactly.
+  expect_round_trip(t, false);
 }
 
 }  // namespace
