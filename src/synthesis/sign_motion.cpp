@@ -1135,6 +1135,43 @@ void keep_pair_contact_on_the_dominant_hand(std::vector<Movement>* copied) {
     if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) m.to_location.reset();
 }
 
+// A symmetric sign that writes the non-dominant hand's place (HamNoSys 4: a symmetry operator
+// and a "hamparbegin place hamplus place hamparend" location; the reader gives that hand its own
+// HandSpec with the dominant orientation already mirrored, hamnosys_parser.cpp nondominant_copy)
+// still copies the dominant hand's movements to the other hand, and the symmetry operator mirrors
+// them (HamNoSys 4 manual, symmetry operators: the non-dominant hand's handshape, orientation,
+// location AND movements are the mirror image). make_plans gave that hand the signer's
+// handedness only (its plan is written for it, mirror_x), so the copies went the dominant way:
+// a move to the right took both hands right, a turn to palm down turned the left palm the right
+// palm's way, a target beside the right of the chest took the left hand across the body there
+// (the corpus's TO-BE-BROKEN1 42 mm deep, pomylić 60 mm). The copy is mirrored here, in signer
+// space, by the symmetry's axes: directions, arcs, circle axes and senses (a mirror image turns
+// the other way, as movement_offset's parity rule), the orientation it turns to, the side of the
+// body place it moves to. A target on "the other hand" is the dominant hand's contact with the
+// other: the copy drops it, as keep_pair_contact_on_the_dominant_hand (each hand sent to the
+// other: Oświęcim's wrists, 49 mm).
+void mirror_copy_for_the_written_other_hand(std::vector<Movement>* copied, const MirrorAxes& sym) {
+  auto flip = [&sym](notation::Direction* d) {
+    if (sym.x) d->x = static_cast<std::int8_t>(-d->x);
+    if (sym.y) d->y = static_cast<std::int8_t>(-d->y);
+    if (sym.z) d->z = static_cast<std::int8_t>(-d->z);
+  };
+  const bool odd = ((sym.x ? 1 : 0) + (sym.y ? 1 : 0) + (sym.z ? 1 : 0)) % 2 == 1;
+  keep_pair_contact_on_the_dominant_hand(copied);
+  for (Movement& m : *copied) {
+    flip(&m.direction);
+    flip(&m.arc_bulge);
+    flip(&m.circle_axis);
+    flip(&m.ellipse_axis);
+    if (odd) m.clockwise = !m.clockwise;
+    if (m.to_orientation) {
+      flip(&m.to_orientation->extended_finger);
+      flip(&m.to_orientation->palm);
+    }
+    if (m.to_location && sym.x) m.to_location->side = mirror_side(m.to_location->side);
+  }
+}
+
 std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::SignSpec& sign) {
   const bool lh = ctx.options.left_handed;
   const Side dom = lh ? kLeft : kRight;
@@ -1171,6 +1208,8 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
     if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place) {
       nd = step.dominant;
       if (sign.dominant.location.kind == Location::Kind::OtherHand) keep_pair_contact_on_the_dominant_hand(&nd);
+      // The symmetry alone: the plan's move_mirror adds the signer's handedness.
+      if (sign.nondominant) mirror_copy_for_the_written_other_hand(&nd, sym_axes);
     }
     if (!step.nondominant.empty()) {
       // Written for the non-dominant hand itself: only the signer's handedness mirrors it.

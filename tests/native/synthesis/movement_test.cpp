@@ -307,6 +307,65 @@ TEST_F(SynthesisMovement, MirroredSymmetryMovesTheOtherHandTheMirrorWay) {
   EXPECT_GT(glm::dot(dl, rig_.left), 0.05f);
 }
 
+// A symmetric sign that writes the other hand's place (HamNoSys "hamsymmlr ... hamparbegin place
+// hamplus place hamparend"): the reader gives that hand its own HandSpec, and make_plans copied the
+// dominant hand's movements to it unmirrored, both hands going right (the corpus's TO-BE-BROKEN1).
+notation::SignSpec with_written_other_hand(notation::SignSpec s) {
+  s.symmetry = notation::Symmetry::MirrorLR;
+  notation::HandSpec nd = s.dominant;
+  nd.location.side = notation::Side::Left;
+  nd.orientation.palm = {-1, 0, 0};  // the dominant palm (left) mirrored, as the reader writes it
+  s.nondominant = nd;
+  return s;
+}
+
+TEST_F(SynthesisMovement, AWrittenOtherHandUnderMirroredSymmetryMovesTheMirrorWay) {
+  Movement m;
+  m.kind = MovementKind::Straight;
+  m.direction = {-1, 0, 0};  // to the signer's right
+  Path p = run(with_written_other_hand(with(m)));
+  glm::vec3 dr = p.palm[kRight].back() - p.palm[kRight].front();
+  glm::vec3 dl = p.palm[kLeft].back() - p.palm[kLeft].front();
+  EXPECT_LT(glm::dot(dr, rig_.left), -0.05f);
+  EXPECT_GT(glm::dot(dl, rig_.left), 0.05f);
+}
+
+TEST_F(SynthesisMovement, AWrittenOtherHandUnderMirroredSymmetryTurnsAndGoesToTheMirrorPlace) {
+  // The dominant hand turns its fingers to the right (palm down) as it goes to the right of the
+  // chest, beside it (TO-BE-BROKEN1's "hamreplace hamextfingeror hampalmd ... hamchest
+  // hamlrbeside"): the other hand turns its fingers to the left and goes to the left, beside the
+  // chest. Copied unmirrored, the left hand crossed the body to the right and turned its fingers
+  // into it.
+  Movement turn;
+  turn.kind = MovementKind::Replace;
+  notation::Orientation o;
+  o.extended_finger = {-1, 0, 1};
+  o.palm = {0, -1, 0};
+  turn.to_orientation = o;
+  notation::SignSpec s = with_written_other_hand(with(turn));
+  Movement to;
+  to.kind = MovementKind::Target;
+  notation::Location chest;
+  chest.kind = notation::Location::Kind::Body;
+  chest.level = notation::BodyLevel::Chest;
+  chest.side = notation::Side::RightBeside;
+  to.to_location = chest;
+  s.movements.back().dominant.push_back(to);
+  Path p = run(s);
+  // The hands end on their own sides, far apart, each beside the chest.
+  EXPECT_GT(glm::dot(p.palm[kLeft].back() - p.palm[kRight].back(), rig_.left), 0.25f);
+  // The left hand is turned as the mirror image of the right: fingers and palm the same way up
+  // and forward, the opposite way sideways (unmirrored, the left fingers pointed 0.86 to the right
+  // where the right ones pointed 0.13 to the left).
+  for (int k = 0; k < 2; ++k) {
+    const glm::vec3 r = p.hand[kRight].back() * (k == 0 ? rig_.arms[kRight].finger_dir : rig_.arms[kRight].palm_normal);
+    const glm::vec3 l = p.hand[kLeft].back() * (k == 0 ? rig_.arms[kLeft].finger_dir : rig_.arms[kLeft].palm_normal);
+    EXPECT_NEAR(glm::dot(r, rig_.left), -glm::dot(l, rig_.left), 0.1f);
+    EXPECT_NEAR(glm::dot(r, rig_.up), glm::dot(l, rig_.up), 0.1f);
+    EXPECT_NEAR(glm::dot(r, rig_.forward), glm::dot(l, rig_.forward), 0.1f);
+  }
+}
+
 TEST_F(SynthesisMovement, EveryMovementKindSynthesises) {
   for (int k = 0; k <= static_cast<int>(MovementKind::Target); ++k)
     for (int size = 0; size < 3; ++size) {
