@@ -1135,6 +1135,39 @@ void keep_pair_contact_on_the_dominant_hand(std::vector<Movement>* copied) {
     if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) m.to_location.reset();
 }
 
+bool moves_to_the_other_hand_in(const std::vector<Movement>& step) {
+  for (const Movement& m : step)
+    if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) return true;
+  return false;
+}
+
+// A symmetric pair with the dominant hand on the other (keep_pair_contact_on_the_dominant_hand)
+// whose step goes to a place on the body or in space (SHOCK2A: the flat hands side by side,
+// thumb side to little side, move up and in to touch the chest; TO-DIG1A: the fists, one on the
+// other, to the chest and beside the shoulder) moves as one: the other hand, its copy, takes the
+// pair there, the dominant hand stays on it. Both went there: the dominant hand's target is kept
+// relative to the other hand's place, taken where the other hand starts (other_hand_point at its
+// key pose), and the other hand's own travel was added to it per frame, so the dominant hand went
+// the way twice, through the chest (SHOCK2A 15 mm, TO-DIG1A 48 mm; the upper arm in the torso).
+// The dominant hand keeps its changes of shape and orientation; its path movements become
+// changes in place (the other hand's copy carries the path).
+void ride_on_the_carrying_hand(std::vector<Movement>* dominant_step) {
+  bool to_place = false;
+  for (const Movement& m : *dominant_step)
+    to_place = to_place || (m.to_location && m.to_location->kind != Location::Kind::OtherHand);
+  if (!to_place) return;
+  for (Movement& m : *dominant_step) {
+    if (m.to_location && m.to_location->kind != Location::Kind::OtherHand) m.to_location.reset();
+    switch (m.kind) {
+      case MovementKind::Straight: case MovementKind::Arc: case MovementKind::Circle: case MovementKind::Ellipse:
+      case MovementKind::Wavy: case MovementKind::Zigzag: case MovementKind::Spiral: case MovementKind::Target:
+        m.kind = MovementKind::Replace;
+        break;
+      default: break;
+    }
+  }
+}
+
 // A symmetric sign that writes the non-dominant hand's place (HamNoSys 4: a symmetry operator
 // and a "hamparbegin place hamplus place hamparend" location; the reader gives that hand its own
 // HandSpec with the dominant orientation already mirrored, hamnosys_parser.cpp nondominant_copy)
@@ -1157,7 +1190,10 @@ void mirror_copy_for_the_written_other_hand(std::vector<Movement>* copied, const
     if (sym.z) d->z = static_cast<std::int8_t>(-d->z);
   };
   const bool odd = ((sym.x ? 1 : 0) + (sym.y ? 1 : 0) + (sym.z ? 1 : 0)) % 2 == 1;
-  keep_pair_contact_on_the_dominant_hand(copied);
+  if (moves_to_the_other_hand_in(*copied)) {
+    copied->clear();
+    return;
+  }
   for (Movement& m : *copied) {
     flip(&m.direction);
     flip(&m.arc_bulge);
@@ -1207,7 +1243,10 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
     std::vector<Movement> nd = step.nondominant;
     if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place) {
       nd = step.dominant;
-      if (sign.dominant.location.kind == Location::Kind::OtherHand) keep_pair_contact_on_the_dominant_hand(&nd);
+      if (sign.dominant.location.kind == Location::Kind::OtherHand) {
+        keep_pair_contact_on_the_dominant_hand(&nd);
+        ride_on_the_carrying_hand(&d.steps.back());
+      }
       // The symmetry alone: the plan's move_mirror adds the signer's handedness.
       if (sign.nondominant) mirror_copy_for_the_written_other_hand(&nd, sym_axes);
     }

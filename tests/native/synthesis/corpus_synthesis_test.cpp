@@ -181,13 +181,14 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
 TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   const CorpusSample& s = corpus_sample();
   if (!s.skip.empty()) GTEST_SKIP() << s.skip;
-  // The sample's measured figures, every 2nd clean sign: 2,236 synthesised, 177 over 5 mm
-  // (7.9 %; 179, 8.0 %, before make_plans mirrored the copied movements of a written other hand:
-  // sign_motion.cpp, mirror_copy_for_the_written_other_hand), deepest 133 mm (after
+  // The sample's measured figures, every 2nd clean sign: 2,236 synthesised, 175 over 5 mm
+  // (7.8 %; 179, 8.0 %, before make_plans mirrored the copied movements of a written other hand
+  // and moved a pair on each other to a body place as one: sign_motion.cpp,
+  // mirror_copy_for_the_written_other_hand, ride_on_the_carrying_hand), deepest 133 mm (after
   // corpus-depth's fixes; before them 21 % of all signs; 208 over
   // 5 mm, 9.4 %, of 2,217 before the HamNoSys reader read the bracketed contact part after a
   // place as that: hamnosys_parser.cpp, read_contact_bracket).
-  constexpr float kMeasuredShareOver5mm = 0.079f;
+  constexpr float kMeasuredShareOver5mm = 0.078f;
   constexpr float kMeasuredDeepest_m = 0.133f;
 
   int synthesised = 0, over = 0;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "notation/hamnosys.h"
 #include "synthesis/collision.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/phrase_text.h"
@@ -366,6 +367,25 @@ TEST_F(SynthesisMovement, AWrittenOtherHandUnderMirroredSymmetryTurnsAndGoesToTh
   }
 }
 
+TEST_F(SynthesisMovement, AWrittenOtherHandHoldsStillWhileTheDominantHandMovesOntoIt) {
+  // The dominant hand moves left onto the other hand's palm (the corpus's Oświęcim: onto the
+  // other wrist's back). That target is the dominant hand's contact with the other: the other
+  // hand is its place for the step. Its mirrored copy (a move to the right) took the place away
+  // from where the dominant hand's target was computed (the other hand's key pose); before
+  // that, the unmirrored copy sent each hand to the other.
+  Movement m;
+  m.kind = MovementKind::Straight;
+  m.direction = {1, 0, 0};
+  notation::Location palm;
+  palm.kind = notation::Location::Kind::OtherHand;
+  palm.hand_place = notation::HandPlace::Palm;
+  palm.contact = notation::Contact::Touch;
+  m.to_location = palm;
+  Path p = run(with_written_other_hand(with(m)));
+  EXPECT_LT(glm::length(p.palm[kLeft].back() - p.palm[kLeft].front()), 0.01f);
+  EXPECT_GT(glm::length(p.palm[kRight].back() - p.palm[kRight].front()), 0.05f);
+}
+
 TEST_F(SynthesisMovement, EveryMovementKindSynthesises) {
   for (int k = 0; k <= static_cast<int>(MovementKind::Target); ++k)
     for (int size = 0; size < 3; ++size) {
@@ -436,6 +456,56 @@ namespace {
 // avatar). They are laid apart at the goal itself, as at the key pose, and the separation is
 // interpolated along the movement: both wrists move at most a few cm per frame with no abrupt
 // change, the hands end apart and clear of each other.
+// A symmetric pair with the dominant hand on the other (the thumb side on the other's little
+// side) that moves to a body place (the corpus's SHOCK2A, TO-DIG1A) moves as one: the other hand
+// carries it there, the dominant hand stays on it (make_plans, ride_on_the_carrying_hand). Both
+// hands went there, the dominant one's target kept relative to where the other started and the
+// other's travel added to it per frame: it went the way twice, into the chest (the first sign
+// 71 mm deep, the second 26 mm, on the reference humanoid).
+TEST(SynthesisMovementTwoHands, APairOnEachOtherMovingToTheBodyMovesAsOne) {
+  struct Case {
+    const char* names;
+  };
+  const Case cases[] = {
+      {"hamsymmlr,hamflathand,hamextfingeru,hampalml,hamparbegin,hamthumbside,hamplus,hampinkyside,"
+       "hamparend,hammoveui,hamchest,hamtouch"},
+      {"hamsymmlr,hamfist,hamextfingeru,hampalml,hamparbegin,hamthumbside,hamplus,hampinkyside,"
+       "hamparend,hammoveu,hamchin,hamtouch"},
+  };
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+  for (const Case& c : cases) {
+    const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(c.names);
+    ASSERT_EQ(read.size(), 1u);
+    ASSERT_TRUE(read[0].ok() && read[0].spec);
+    SynthesisResult r = synthesize_sign(*read[0].spec, av);
+    ASSERT_TRUE(r.ok()) << r.errors[0].message;
+    EXPECT_LE(r.report.max_penetration_m, 0.005f) << c.names;
+    int first = first_sign_frame(r.clip), last = first;
+    for (const auto& seg : r.clip.segments)
+      if (seg.kind == ClipSegment::Kind::Sign) last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+    PoseBuilder start = frame_pose(rig, r.clip, first), end = frame_pose(rig, r.clip, last);
+    float apart_m[2];
+    int k = 0;
+    for (const PoseBuilder* pb : {&start, &end}) {
+      const glm::vec3 thumb_side = hand_part(*pb, kRight, notation::HandPlace::ThumbSide, 1).point;
+      const glm::vec3 little_side = hand_part(*pb, kLeft, notation::HandPlace::LittleSide, 1).point;
+      apart_m[k++] = glm::length(thumb_side - little_side);
+    }
+    // The hands stay together: the dominant thumb side where it was at the other's little side.
+    EXPECT_NEAR(apart_m[1], apart_m[0], 0.01f) << c.names;
+    // The pair travels to the place as one: both hands the same way and as far.
+    glm::vec3 travel[2];
+    for (Side side : {kLeft, kRight})
+      travel[side] = hand_part(end, side, notation::HandPlace::Palm, 1).point -
+                     hand_part(start, side, notation::HandPlace::Palm, 1).point;
+    EXPECT_GT(glm::length(travel[kLeft]), 0.04f) << c.names;
+    EXPECT_LT(glm::length(travel[kRight] - travel[kLeft]), 0.02f) << c.names;
+  }
+}
+
 TEST(SynthesisMovementTwoHands, HandsThatMeetAtTheGoalArePartedAlongTheMovement) {
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
