@@ -2018,6 +2018,29 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // 4.7 mm deep (MotionSmoothness.EveryLexiconSignMovesHumanlyAndKeepsItsArmsOut...); nothing
   // else in the lexicon changes.
   constexpr float kRampOnlyClearM = 0.0049f;
+  // How much deeper than the key pose's place a movement's contact point may go into the trunk
+  // (trunk_crossing's allowed_m): a touch's acceptance, 1 cm.
+  constexpr float kMovementStopDepthM = 0.01f;
+  // Which hands stop at the body (collision.h trunk_crossing). A hand moved only by directions
+  // (HamNoSys's hamchest hamclose hammovei hamtouch: in to the chest and touch) goes no further
+  // in than the body: a direction's amplitude is a size, not a place, and the touch that ends it
+  // is at the body (FEAR1's, SICK1's fist 5 cm into the chest, the forearm 33 mm in the torso
+  // behind it). A hand with a movement to a place (DEAF's ear to the mouth) goes between places
+  // on the body: its straight line may cut a chord of the head and stays as written, unless at
+  // some frame it goes through the body (its target past the far side of a capsule's axis). Every
+  // frame of a stopping hand stops, so its path halts at the body instead of going in and jumping
+  // back.
+  std::array<bool, 2> stops_at_body = {false, false};
+  for (int i = 0; i < 2 && ctx.options.avoid_collisions; ++i) {
+    if (!plans[i].active || plans[i].on_other_hand) continue;
+    bool to_place = false;
+    for (const auto& step : plans[i].steps)
+      for (const Movement& m : step) to_place = to_place || (m.kind == MovementKind::Target && m.to_location);
+    stops_at_body[i] = !to_place;
+    for (size_t f = 1; f < frames.size() && !stops_at_body[i]; ++f)
+      stops_at_body[i] = trunk_crossing(ctx.body, rest, frames[0].hand[i].target, frames[f].hand[i].target,
+                                        kMovementStopDepthM).through;
+  }
   auto solve_frames = [&](const std::vector<char>* redo) {
     if (!redo || (*redo)[0]) {
       out->max_reach_error_m = 0.0f;
@@ -2065,6 +2088,9 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
           PartPoint place = solver.other_hand_place(pb, plan);
           t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
         }
+        // The contact point stops at the body (stops_at_body, above), the line from the key pose's.
+        if (stops_at_body[i] && f > 0)
+          t.point = trunk_crossing(ctx.body, pb, frames[0].hand[i].target, t.point, kMovementStopDepthM).stop;
         t.contact_offset = h.offset;
         if (wrist_led[i]) {
           t.point += wrist_from_contact[i];

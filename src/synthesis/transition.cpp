@@ -990,7 +990,8 @@ class DirectPathLength {
 // stand, so the collision remedies are unchanged wherever the hand's path is not clear.
 bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                           std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, float bow_m,
-                          bool search_swivel, bool allow_longer, TransitionPlan* out, bool* deeper) {
+                          bool search_swivel, bool allow_longer, TransitionPlan* out, bool* deeper,
+                          float added_m = 0.0005f) {
   *deeper = false;
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
@@ -1043,9 +1044,10 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   // cannot change the outcome (depths only grow along the pass) and are skipped.
   const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
   const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
-  constexpr float kNothingAdded_m = 0.0005f;  // plan_transition's: sampling
-  const float hand_ceiling_m = std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m;
-  const float arm_ceiling_m = std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m;
+  // added_m: 0.5 mm (plan_transition's kNothingAdded_m: sampling), or what the caller still
+  // accepts (plan_hand_path_least_deep).
+  const float hand_ceiling_m = std::max(ends_from.hand_m, ends_to.hand_m) + added_m;
+  const float arm_ceiling_m = std::max(ends_from.arm_m, ends_to.arm_m) + added_m;
   auto is_deeper = [&](const KindDepths& d) { return d.hand_m > hand_ceiling_m || d.arm_m > arm_ceiling_m; };
   auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
@@ -1155,6 +1157,43 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
     if (!deeper) return false;
   }
   return false;
+}
+
+// The last resort of a rest transition that nothing above cleared: the hand's path at whichever
+// of kHandPathTries adds least beyond the end poses, if that is less than `within_m` (the best
+// routed path's excess over them, excess_over's measure). plan_hand_path takes a try only when it
+// adds nothing (0.5 mm), and the routing below it (via-poses on the direct slerp) cannot repair an
+// arm that the slerp of joint rotations swings through the trunk: seed 004's remedy, intermediate
+// states, must be states of a path the arm can take. Measured on the corpus (every 2nd clean
+// sign): TO-BE-IN-HOT-WATER2's lowering to the rest, the hand's path 0.9-1.4 mm at every try (its
+// end poses 0.0) and so not taken, the direct path 135 mm and the best of 48 routed candidates
+// 120.8 mm, the forearm through the torso; 38 such rest transitions 20-135 mm deep. Each try is
+// measured only as far as it stays within the best found so far (plan_hand_path_bowed's ceiling),
+// so a try that cannot win stops early. Returns the winner's excess in *excess_m.
+bool plan_hand_path_least_deep(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
+                               std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct,
+                               float within_m, TransitionPlan* out, float* excess_m) {
+  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
+  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
+  const float hand_floor_m = std::max(ends_from.hand_m, ends_to.hand_m);
+  const float arm_floor_m = std::max(ends_from.arm_m, ends_to.arm_m);
+  bool found = false;
+  for (const HandPathTry& attempt : kHandPathTries) {
+    if (within_m <= 0.0f) break;
+    TransitionPlan p;
+    bool deeper = false;
+    if (!plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
+                              attempt.search_swivel, true, &p, &deeper, within_m))
+      continue;
+    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
+    const float excess = excess_over(d, hand_floor_m, arm_floor_m);
+    if (excess >= within_m) continue;  // each kind within it, both together not
+    *out = std::move(p);
+    *excess_m = excess;
+    within_m = excess - 1e-4f;
+    found = true;
+  }
+  return found;
 }
 
 }  // namespace
@@ -1465,7 +1504,17 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       if (depth[s] > 0.005f) fwd[s] = rig.forward * (depth[s] + margin_m);
     return fwd;
   };
-  if (depth[0] <= 0.005f && depth[1] <= 0.005f) return best;
+  // Nothing cleared it: the hand's path that adds least, if it adds less than the best route.
+  auto least_deep = [&] {
+    if (!hand_path_tried || best.max_penetration_m <= 0.005f || best_excess <= kNothingAdded_m) return best;
+    TransitionPlan hand_path;
+    float excess = 0.0f;
+    if (plan_hand_path_least_deep(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, best_excess - 1e-4f,
+                                  &hand_path, &excess))
+      return hand_path;
+    return best;
+  };
+  if (depth[0] <= 0.005f && depth[1] <= 0.005f) return least_deep();
   const float margins_m[] = {0.05f, 0.10f, 0.15f, 0.22f};
   for (float tau : {via_tau, 0.5f})
     for (float margin : margins_m)
@@ -1478,7 +1527,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     for (float margin : margins_m)
       if (consider(plan_chain({make_via(forward_push(margin), tt.first), make_via(forward_push(margin), tt.second)})))
         return best;
-  return best;
+  return least_deep();
 }
 
 }  // namespace sw::synthesis

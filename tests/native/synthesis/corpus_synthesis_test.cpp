@@ -181,10 +181,12 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
 TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   const CorpusSample& s = corpus_sample();
   if (!s.skip.empty()) GTEST_SKIP() << s.skip;
-  // The sample's measured figures, every 2nd clean sign: 2,217 synthesised, 208 over 5 mm
-  // (9.4 %), deepest 135 mm (after corpus-depth's fixes; before them 21 % of all signs).
-  constexpr float kMeasuredShareOver5mm = 0.094f;
-  constexpr float kMeasuredDeepest_m = 0.135f;
+  // The sample's measured figures, every 2nd clean sign: 2,217 synthesised, 159 over 5 mm
+  // (7.2 %), deepest 118 mm (rest-route: movements stop at the body, a rest transition that no
+  // route clears takes the hand's path that adds least; before, 208 over 5 mm (9.4 %), deepest
+  // 135 mm; before corpus-depth's fixes 21 % of all signs).
+  constexpr float kMeasuredShareOver5mm = 0.072f;
+  constexpr float kMeasuredDeepest_m = 0.118f;
 
   int synthesised = 0, over = 0;
   float worst_m = 0.0f;
