@@ -2036,10 +2036,15 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     bool to_place = false;
     for (const auto& step : plans[i].steps)
       for (const Movement& m : step) to_place = to_place || (m.kind == MovementKind::Target && m.to_location);
-    stops_at_body[i] = !to_place;
-    for (size_t f = 1; f < frames.size() && !stops_at_body[i]; ++f)
-      stops_at_body[i] = trunk_crossing(ctx.body, rest, frames[0].hand[i].target, frames[f].hand[i].target,
-                                        kMovementStopDepthM).through;
+    // Checked once per target along the sign, against the trunk at rest: a hand none of whose
+    // targets would stop is not checked frame by frame (no lexicon sign's is).
+    const glm::vec3& from = frames[0].hand[i].target;
+    for (size_t f = 1; f < frames.size() && !stops_at_body[i]; ++f) {
+      const glm::vec3& to = frames[f].hand[i].target;
+      if (to == frames[f - 1].hand[i].target) continue;
+      const TrunkCrossing c = trunk_crossing(ctx.body, rest, from, to, kMovementStopDepthM);
+      stops_at_body[i] = c.stop != to && (!to_place || c.through);
+    }
   }
   auto solve_frames = [&](const std::vector<char>* redo) {
     if (!redo || (*redo)[0]) {
