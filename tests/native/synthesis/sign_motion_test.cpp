@@ -21,9 +21,11 @@ namespace {
 using namespace testing;
 
 // hamfist hamextfingerul hampalmd hamshoulders hamclose hammovei hamtouch
-const char* const kFistInAtTheShoulders = "\xee\x80\x80\xee\x80\xa7\xee\x80\xbc\xee\x81\x91\xee\x83\x90\xee\x82\x8c\xee\x83\x91";
+const char* const kFistInAtTheShoulders =
+    "\xee\x80\x80\xee\x80\xa7\xee\x80\xbc\xee\x81\x91\xee\x83\x90\xee\x82\x8c\xee\x83\x91";
 // hamfist hamextfingerul hampalml hamchest hamclose hammovei hamtouch
-const char* const kFistInAtTheChest = "\xee\x80\x80\xee\x80\xa7\xee\x80\xbe\xee\x81\x92\xee\x83\x90\xee\x82\x8c\xee\x83\x91";
+const char* const kFistInAtTheChest =
+    "\xee\x80\x80\xee\x80\xa7\xee\x80\xbe\xee\x81\x92\xee\x83\x90\xee\x82\x8c\xee\x83\x91";
 
 TEST(SignMotionStopsAtTheBody, AMovementInToTheBodyEndsAtItNotThroughIt) {
   std::string error;
@@ -33,21 +35,25 @@ TEST(SignMotionStopsAtTheBody, AMovementInToTheBodyEndsAtItNotThroughIt) {
     SynthContext ctx;
     ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
     for (const char* hns : {kFistInAtTheShoulders, kFistInAtTheChest}) {
-      const std::vector<notation::SignParse> parsed = notation::parse_signs(hns, notation::NotationFormat::HamNoSys);
+      const std::vector<notation::SignParse> parsed =
+          notation::parse_signs(hns, notation::NotationFormat::HamNoSys);
       ASSERT_FALSE(parsed.empty());
       ASSERT_TRUE(parsed[0].ok() && parsed[0].spec);
       const SynthesisResult r = synthesize_sign(*parsed[0].spec, av, SynthesisOptions{});
       ASSERT_TRUE(r.ok());
-      const std::string what = rig_name + (hns == kFistInAtTheShoulders ? ", shoulders" : ", chest");
+      const std::string what =
+          rig_name + (hns == kFistInAtTheShoulders ? ", shoulders" : ", chest");
       // Issue 4: no frame over 5 mm (rest transitions included). Before: 33-122 mm.
       EXPECT_LE(r.report.max_penetration_m, 0.005f) << what;
-      // The elbow stays beside the body: never more than 12 cm behind the shoulder joint (arm_ik.cpp
-      // elbow_behind_cost's free range). Before: 22-29 cm behind, the hand behind the neck.
+      // The elbow stays beside the body: never more than 12 cm behind the shoulder joint
+      // (arm_ik.cpp elbow_behind_cost's free range). Before: 22-29 cm behind, the hand behind the
+      // neck.
       const ArmRig& arm = ctx.rig.arms[kRight];
       float behind_m = 0.0f;
       for (int f = 0; f < r.clip.frame_count; ++f) {
         const PoseBuilder pb = frame_pose(ctx.rig, r.clip, f);
-        behind_m = std::max(behind_m, -glm::dot(pb.position(arm.lower) - pb.position(arm.upper), ctx.rig.forward));
+        behind_m = std::max(
+            behind_m, -glm::dot(pb.position(arm.lower) - pb.position(arm.upper), ctx.rig.forward));
       }
       EXPECT_LT(behind_m, 0.12f) << what;
     }
