@@ -6,8 +6,10 @@
 //   sign     := [symmetry [hamalternatingmotion]] config [location] action*
 //   config   := hand | hamparbegin hand hamplus hand hamparend      (dominant, non-dominant)
 //   hand     := handshape [extfidir {[hambetween] extfidir}] [palm {[hambetween] palm}]
-//   location := [part] [lr] level [lr] [contact] | place [contact]
+//   location := [part] [lr] level [lr] [contact] [bracket] | place [contact] [bracket]
 //             | hamparbegin location hamplus location hamparend [contact]
+//             | (place | hamparbegin part hamplus place hamparend) [contact] body-location
+//   bracket  := hamseqbegin contact {digit | part | lr} hamseqend   (this hand's contact part)
 //   action   := movement modifier* | hamreplace (config|hand) [location] | location (target)
 //             | hamseqbegin action* hamseqend | hamfusionbegin action* hamfusionend
 //             | hamparbegin action* [hamplus action*] hamparend | repetition

@@ -1,6 +1,7 @@
 // Reader of HamNoSys 4 (see hamnosys.h for the grammar). Symbols -> SignSpec, recovering from
 // unknown symbols and unbalanced brackets with a diagnostic each.
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include "notation/formula.h"
@@ -66,6 +67,10 @@ struct LocationPart {
   bool has_place = false;     // a place on a hand / arm
   Location location;          // level/side or place (kind set accordingly)
   bool part_only = false;     // only a hand part (digit/part symbols) with no body level
+  // The part of THIS hand that makes the contact, from a bracket after the place
+  // (read_contact_bracket): "hamearlobe hamseqbegin hamtouch hamthumb hamfingernail hamseqend".
+  std::optional<HandPlace> bracket_part;
+  std::int8_t bracket_finger = -1;
 };
 
 class Reader {
@@ -149,7 +154,13 @@ class Reader {
         for (Movement& m : step.nondominant) m.alternating = true;
       }
     }
-    if (sign->dominant.location.kind == Location::Kind::OtherHand) sign->nondominant_is_place = true;
+    // The other hand is a still place only without a symmetry operator (HamNoSys 4: the
+    // non-dominant hand given as the place, "hamnondominant" / a hand constellation). With one,
+    // both hands make the movements, the non-dominant hand mirrored, and the contact is between
+    // them (the real-sign corpus, TO-MIX3: both hands circle against each other; read as a
+    // place, one hand circled on a still one: 157 of its signs).
+    if (sign->dominant.location.kind == Location::Kind::OtherHand && sign->symmetry == Symmetry::None)
+      sign->nondominant_is_place = true;
     return true;
   }
 
@@ -388,6 +399,9 @@ class Reader {
           break;
         }
         continue;
+      } else if (c == hamseqbegin && (out->has_level || out->has_place) && is_contact_bracket(i, end)) {
+        i = read_contact_bracket(i, out, contact, has_contact);
+        break;
       } else if ((c == hamseqbegin && i + 1 < end && is_location_start(s_[i + 1].code)) || c == hamseqend) {
         // A sequence of places inside a location (contact along the way): read through.
       } else {
@@ -405,6 +419,53 @@ class Reader {
     }
     out->part_only = out->has_place && !out->has_level;
     return i;
+  }
+
+  // HamNoSys 4 writes the part of the hand that makes a contact in brackets after the place:
+  // place hamseqbegin contact [digits] part [side] hamseqend (an earring: "hamearlobe hamlrat
+  // [hamtouch hamthumb hamindexfinger hamfingernail hampalm]", the thumb and index nails touch
+  // the earlobe). SiGML writes the same as a location_bodyarm with a location_hand child (the
+  // corpus's NGT file: location_bodyarm contact="touch" location="shoulders" with location_hand
+  // digits="2" location="midjoint" side="dorsal"). Read as a movement to the hand part, it sent
+  // one-handed signs to the resting hand (the real-sign corpus, 176 brackets after a side mark
+  // alone). Only a contact followed by hand-part symbols is such a bracket; a bracket with a body
+  // place or a movement inside ("[hambrushing hamchin hamtouch]") is a path and read as before.
+  bool is_contact_bracket(std::size_t i, std::size_t end) const {
+    const std::size_t close = match_[i];
+    if (close >= end || close < i + 3 || !in_group(s_[i + 1].code, HamGroup::Contact)) return false;
+    bool part = false;
+    for (std::size_t k = i + 2; k < close; ++k) {
+      // hamlrat / hamlrbeside: the side of the part ("[hamtouch hamlrbeside hamwristback]").
+      if (s_[k].code == hamlrat || s_[k].code == hamlrbeside) continue;
+      if (!is_hand_place(s_[k].code)) return false;
+      part = true;
+    }
+    return part;
+  }
+  // Reads the bracket is_contact_bracket accepted; returns the index after its hamseqend. The
+  // first digit names the finger (a second one, "hamthumb hamindexfinger", is read and dropped:
+  // Location has one contact finger); a second part after a finger part is the side of it
+  // (hampalm: palmar, hamhandback: dorsal, SiGML side="palmar"/"dorsal") and is not kept.
+  std::size_t read_contact_bracket(std::size_t i, LocationPart* out, Contact* contact, bool* has_contact) {
+    const std::size_t close = match_[i];
+    *contact = contact_of(s_[i + 1].code);
+    *has_contact = true;
+    int finger = -1;
+    std::optional<HandPlace> part;
+    for (std::size_t k = i + 2; k < close; ++k) {
+      const char32_t c = s_[k].code;
+      if (c >= hamthumb && c <= hampinky) {
+        if (finger < 0) finger = static_cast<int>(c - hamthumb);
+      } else if (c == hamlrat || c == hamlrbeside) {
+        // the side of the part: Location has no field for it
+      } else if (!part) {
+        part = place_of(c);
+      }
+    }
+    if (!part) part = HandPlace::Fingertip;  // a finger alone: its tip (as read_location_part)
+    out->bracket_part = part;
+    out->bracket_finger = static_cast<std::int8_t>(finger);
+    return close + 1;
   }
 
   // A whole location (single or hamparbegin a hamplus b hamparend) applied to the sign's hands.
@@ -456,6 +517,10 @@ class Reader {
           *nondominant_set = true;
         }
       }
+      if (a.bracket_part) {
+        dominant->contact_part = a.bracket_part;
+        dominant->contact_finger = a.bracket_finger;
+      }
       if (ha) contact = ca;
       if (i < end && in_group(s_[i].code, HamGroup::Contact)) {
         contact = contact_of(s_[i].code);
@@ -479,6 +544,10 @@ class Reader {
       } else {
         *dominant = a.location;
       }
+      if (a.bracket_part) {  // the bracket names this hand's part: it wins over a part before the place
+        dominant->contact_part = a.bracket_part;
+        dominant->contact_finger = a.bracket_finger;
+      }
     }
     dominant->contact = has_contact ? contact : (a.has_level || a.has_place ? Contact::None : dominant->contact);
     return i;
@@ -488,11 +557,55 @@ class Reader {
     Location nd;
     bool nd_set = false;
     i = read_location(i, end, &sign->dominant.location, &nd, &nd_set);
+    if (!nd_set && sign->dominant.location.kind == Location::Kind::OtherHand)
+      i = read_constellation_place(i, end, &nd, &nd_set);
     if (nd_set) {
-      if (!sign->nondominant) sign->nondominant = sign->dominant;
+      if (!sign->nondominant) sign->nondominant = nondominant_copy(*sign);
       sign->nondominant->location = nd;
     }
     return i;
+  }
+
+  // A hand constellation (the dominant hand's part at a place on the other hand) followed by a
+  // body location: the pair is made there ("hamparbegin hampalm hamplus hamhandback hamparend
+  // hamclose hamshoulders": the palm close to the other hand's back, at the shoulders). SiGML
+  // writes it as a handconstellation with a location_bodyarm child, which gsigml_reader.cpp
+  // gives the non-dominant hand (the place) as its location; so does this. It was read as a
+  // first movement to that body location (the corpus's TO-TELL1, HEART2A, TO-READ1C, CURTAIN2).
+  // Returns the index after the body location, or i when none follows.
+  std::size_t read_constellation_place(std::size_t i, std::size_t end, Location* nd, bool* nd_set) {
+    if (i >= end) return i;
+    const char32_t c = s_[i].code;
+    const bool body = is_body_level(c) || c == hamneutralspace ||
+                      ((c == hamlrat || c == hamlrbeside) && i + 1 < end && is_body_level(s_[i + 1].code));
+    if (!body) return i;
+    LocationPart where;
+    Contact contact = Contact::None;
+    bool has_contact = false;
+    const std::size_t next = read_location_part(i, end, &where, &contact, &has_contact);
+    if (!where.has_level || where.has_place) return i;
+    *nd = where.location;
+    nd->contact = has_contact ? contact : Contact::None;
+    *nd_set = true;
+    return next;
+  }
+
+  // The non-dominant hand as the dominant hand has it, for a sign that gives the non-dominant
+  // hand only a location: under a mirror symmetry its orientation is the dominant one mirrored
+  // (written for the left hand, as a hamplus configuration is), so the copy does not turn the
+  // left palm the way the right one faces.
+  static HandSpec nondominant_copy(const SignSpec& sign) {
+    HandSpec nd = sign.dominant;
+    const Symmetry m = sign.symmetry;
+    const bool x = m == Symmetry::MirrorLR || m == Symmetry::MirrorLRUD || m == Symmetry::MirrorLRIO;
+    const bool y = m == Symmetry::MirrorLRUD || m == Symmetry::ParallelUD;
+    const bool z = m == Symmetry::MirrorLRIO || m == Symmetry::ParallelIO;
+    for (Direction* d : {&nd.orientation.extended_finger, &nd.orientation.palm}) {
+      if (x) d->x = static_cast<std::int8_t>(-d->x);
+      if (y) d->y = static_cast<std::int8_t>(-d->y);
+      if (z) d->z = static_cast<std::int8_t>(-d->z);
+    }
+    return nd;
   }
 
   // ---- actions

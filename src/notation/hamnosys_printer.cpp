@@ -114,6 +114,15 @@ Symbols location_symbols(const Location& l, const Location* nondominant) {
     } else {
       append(&out, place_symbols(l.hand_place, l.finger));
     }
+    if (nondominant) {
+      // The constellation made at a body location, which the non-dominant hand (the place)
+      // holds: "(part + place) contact level [contact]" (hamnosys_parser.cpp,
+      // read_constellation_place).
+      if (contact) out.push_back(contact);
+      append(&out, level_symbols(*nondominant));
+      if (char32_t c = contact_symbol(nondominant->contact)) out.push_back(c);
+      return out;
+    }
   } else if (nondominant) {
     out.push_back(hamparbegin);
     if (l.contact_part) append(&out, place_symbols(*l.contact_part, l.contact_finger));

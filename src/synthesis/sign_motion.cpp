@@ -1115,6 +1115,26 @@ bool meet_where_both_hands_hold(Solver& solver, const HandPlan& plan, const Hand
   return true;
 }
 
+// Whether a hand's movements take it to a place on the other hand or arm.
+bool moves_to_the_other_hand(const HandPlan& plan) {
+  for (const auto& step : plan.steps)
+    for (const auto& m : step)
+      if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) return true;
+  return false;
+}
+
+// A symmetric pair whose dominant hand is on the other (HamNoSys: a symmetry operator and a
+// hand contact, hamnosys_parser.cpp; ROUND-BALL2: flat hands palm on palm, both moving) moves
+// both hands, the other hand with the dominant hand's movements mirrored. A target on "the other
+// hand" among those (the touch at the end of the movement) is the dominant hand's contact with
+// the other: the dominant hand keeps it, being placed on the other hand. Copied to the other hand
+// it asked each hand to go to the other, each placed relative to the other (the corpus: 19 signs
+// deeper, up to 117 mm). The copy keeps the movement and drops that target.
+void keep_pair_contact_on_the_dominant_hand(std::vector<Movement>* copied) {
+  for (Movement& m : *copied)
+    if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) m.to_location.reset();
+}
+
 std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::SignSpec& sign) {
   const bool lh = ctx.options.left_handed;
   const Side dom = lh ? kLeft : kRight;
@@ -1148,9 +1168,10 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   for (const auto& step : sign.movements) {
     d.steps.push_back(step.dominant);
     std::vector<Movement> nd = step.nondominant;
-    if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place) nd = step.dominant;
-    if (nd.empty() && sym != Symmetry::None && sign.nondominant && !sign.nondominant_is_place)
+    if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place) {
       nd = step.dominant;
+      if (sign.dominant.location.kind == Location::Kind::OtherHand) keep_pair_contact_on_the_dominant_hand(&nd);
+    }
     if (!step.nondominant.empty()) {
       // Written for the non-dominant hand itself: only the signer's handedness mirrors it.
       n.move_mirror = MirrorAxes{lh, false, false};
@@ -1158,16 +1179,6 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
     n.steps.push_back(sign.nondominant_is_place ? std::vector<Movement>{} : nd);
     for (const auto& m : step.dominant) n.alternating = n.alternating || m.alternating;
   }
-  // A one-handed sign has no other hand to move to. HamNoSys writes the parts of the hand that
-  // make a contact in brackets after the place (an earring: earlobe [touch thumb, index nail]);
-  // read as a movement to "the other hand's palm / fingertip" (the reader's target), it sent the
-  // hand from the ear down to the resting hand by the hip, the forearm through the torso on the
-  // way (the real-sign corpus: about a third of its signs over 5 mm, up to 12 cm). The hand
-  // keeps its written place and contact for the movement's time instead.
-  if (!n.active)
-    for (auto& step : d.steps)
-      for (auto& m : step)
-        if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) m.to_location.reset();
   for (auto& p : plans) {
     const Location& loc = p.spec.location;
     if (loc.kind == Location::Kind::OtherHand) {
@@ -1402,8 +1413,10 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   Solver solver(ctx, errors, where);
   std::array<HandPlan, 2> plans = make_plans(ctx, sign);
   if (plans[0].on_other_hand && plans[1].on_other_hand) place_pair_in_neutral_space(&plans[1], plans[0]);
-  if (plans[0].on_other_hand && !plans[1].active) {
-    // A place on the other hand needs that hand: hold it in neutral space, palm up.
+  if ((plans[0].on_other_hand || moves_to_the_other_hand(plans[0])) && !plans[1].active) {
+    // A place on the other hand needs that hand: hold it in neutral space, palm up. So does a
+    // one-handed sign that moves to it (the corpus's INJECTION1A: into the crook of the other
+    // elbow; NGT BLOED_AFNEMEN), which make_plans no longer drops (the reader's brackets).
     plans[1].active = true;
     plans[1].spec = notation::HandSpec{};
     plans[1].spec.orientation.extended_finger = {1, 0, 1};

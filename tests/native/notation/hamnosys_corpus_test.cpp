@@ -85,10 +85,12 @@ TEST(HamNoSysCorpus, UnicodeAndNamesParseAndRoundTrip) {
   for (const std::string& f : failures) std::printf("  round-trip failure: %s\n", f.c_str());
   EXPECT_EQ(unicode.signs, 4482);
   EXPECT_EQ(names.signs, 1914);
-  // Measured: 4481/4482 built, 4433 (98.9%) without error; names 1904/1914 (99.5%) clean;
-  // print -> parse gives the same SignSpec for 99.3% / 99.5% of the clean signs.
+  // Measured: 4481/4482 built, 4472 (99.8%) without error (4433, 98.9%, before the bracketed
+  // contact part after a place was read as such: a second hand part in the bracket, read as a
+  // target, was "expected a location symbol"); names 1905/1914 (99.5%) clean; print -> parse gives the
+  // same SignSpec for 99.0% / 99.5% of the clean signs.
   EXPECT_EQ(unicode.parsed, unicode.signs - 1);
-  EXPECT_GE(unicode.clean * 1000, unicode.signs * 975);
+  EXPECT_GE(unicode.clean * 1000, unicode.signs * 995);
   EXPECT_GE(names.clean * 1000, names.signs * 980);
   EXPECT_GE(unicode.round_trips * 1000, unicode.clean * 985);
   EXPECT_GE(names.round_trips * 1000, names.clean * 985);

@@ -58,7 +58,8 @@ TEST(HamNoSys, TwoHandsSymmetryGroupsAndReplacement) {
   EXPECT_EQ(s.dominant.location.kind, Location::Kind::OtherHand);
   EXPECT_EQ(s.dominant.location.hand_place, HandPlace::Palm);
   EXPECT_EQ(*s.dominant.location.contact_part, HandPlace::Fingertip);
-  EXPECT_TRUE(s.nondominant_is_place);
+  // A symmetry operator: both hands move, the contact between them (not a still place).
+  EXPECT_FALSE(s.nondominant_is_place);
   ASSERT_EQ(s.movements.size(), 3u);
   EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Ellipse);
   EXPECT_EQ(s.movements[0].dominant[0].size, Size::Large);

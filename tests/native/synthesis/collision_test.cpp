@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <map>
 
+#include "notation/hamnosys.h"
 #include "synthesis/transition.h"
 #include "synthesis_fixture.h"
 
@@ -824,21 +825,20 @@ TEST(SynthesisCollision, TheRestingArmGivesWayToAHandAtTheFarSide) {
 
 // A one-handed sign has no other hand to go to. HamNoSys writes the parts of the hand that touch
 // in brackets after the place (an earring: earlobe [touch thumb, index nail]), which the reader
-// gives as a movement to a place on "the other hand". Followed, it took the hand from the ear
+// gave as a movement to a place on "the other hand". Followed, it took the hand from the ear
 // down to the resting left hand by the hip and the forearm through the torso on the way (the
-// project avatar's forearm 55 mm in it). The hand keeps its written place instead.
+// project avatar's forearm 55 mm in it); make_plans dropped such targets of one-handed signs.
+// The reader now reads the bracket as the contact part (hamnosys_parser.cpp,
+// read_contact_bracket) and make_plans has no such exception: the sign as read stays at the ear.
 TEST(SynthesisCollision, AOneHandedSignDoesNotReachForTheRestingHand) {
   std::string error;
   const NamedRigs rigs = reference_and_project_avatar(&error);
   ASSERT_TRUE(error.empty()) << error;
-  notation::SignSpec s = sign_at(index_point(), BodyLevel::Ears, Side::Right, Contact::Touch);
-  notation::Movement to_hand;
-  to_hand.kind = notation::MovementKind::Target;
-  notation::Location palm;
-  palm.kind = notation::Location::Kind::OtherHand;
-  palm.hand_place = notation::HandPlace::Palm;
-  to_hand.to_location = palm;
-  s.movements.push_back(notation::MovementStep{{to_hand}, {}});
+  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(
+      "hamfinger2,hamextfingeru,hampalml,hamear,hamlrat,hamseqbegin,hamtouch,hamindexfinger,hamfingerpad,hamseqend");
+  ASSERT_EQ(read.size(), 1u);
+  ASSERT_TRUE(read[0].ok() && read[0].spec);
+  const notation::SignSpec s = *read[0].spec;
   for (const auto& [name, av] : rigs) {
     Synthesizer synth(av);
     ASSERT_TRUE(synth.ok()) << synth.error();
@@ -860,7 +860,8 @@ TEST(SynthesisCollision, AOneHandedSignDoesNotReachForTheRestingHand) {
     // No deeper than the same hand held at the ear without the bracket (the reference humanoid's
     // index at its ear has its own depth, not this test's concern).
     notation::SignSpec still = s;
-    still.movements.clear();
+    still.dominant.location.contact_part.reset();
+    still.dominant.location.contact_finger = -1;
     const float still_m = synth.sign(still, SynthesisOptions{}).report.max_penetration_m;
     EXPECT_LE(r.report.max_penetration_m, still_m + 0.001f)
         << name << ": " << r.report.max_penetration_m * 1000.0f << " mm against " << still_m * 1000.0f << " mm";

@@ -170,7 +170,7 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
   // Measured (corpus-pair), all and sampled alike: every clean sign synthesises (4,433 of 4,433;
   // 4,313 before a pair of hands written each on the other was placed in neutral space, 2.7 % of
   // them refused). A margin of 0.5 % for changes that trade a sign or two.
-  EXPECT_GE(s.clean, 4400) << "the corpus parses less cleanly than measured: hamnosys_corpus_test.cpp says why";
+  EXPECT_GE(s.clean, 4460) << "the corpus parses less cleanly than measured: hamnosys_corpus_test.cpp says why";
   EXPECT_GE(synthesised, static_cast<int>(0.995 * sampled)) << "of " << sampled << " clean signs synthesised";
 }
 
@@ -181,12 +181,14 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
 TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   const CorpusSample& s = corpus_sample();
   if (!s.skip.empty()) GTEST_SKIP() << s.skip;
-  // The sample's measured figures, every 2nd clean sign: 2,217 synthesised, 159 over 5 mm
-  // (7.2 %), deepest 118 mm (rest-route: movements stop at the body, a rest transition that no
-  // route clears takes the hand's path that adds least; before, 208 over 5 mm (9.4 %), deepest
-  // 135 mm; before corpus-depth's fixes 21 % of all signs).
-  constexpr float kMeasuredShareOver5mm = 0.072f;
-  constexpr float kMeasuredDeepest_m = 0.118f;
+  // The sample's measured figures, every 2nd clean sign: 2,236 synthesised, 140 over 5 mm
+  // (6.3 %), deepest 129 mm (rest-route: movements stop at the body, and a rest transition that no
+  // route clears takes the hand's path that adds least; 179 over 5 mm, 8.0 %, deepest 133 mm
+  // before; 208 over 5 mm, 9.4 %, of 2,217 before the HamNoSys reader read the bracketed contact
+  // part after a place as that: hamnosys_parser.cpp, read_contact_bracket; before corpus-depth's
+  // fixes 21 % of all signs).
+  constexpr float kMeasuredShareOver5mm = 0.063f;
+  constexpr float kMeasuredDeepest_m = 0.129f;
 
   int synthesised = 0, over = 0;
   float worst_m = 0.0f;
