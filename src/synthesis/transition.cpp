@@ -1164,12 +1164,13 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
 // routed path's excess over them, excess_over's measure). plan_hand_path takes a try only when it
 // adds nothing (0.5 mm), and the routing below it (via-poses on the direct slerp) cannot repair an
 // arm that the slerp of joint rotations swings through the trunk: seed 004's remedy, intermediate
-// states, must be states of a path the arm can take. Measured on the corpus (every 2nd clean
-// sign): TO-BE-IN-HOT-WATER2's lowering to the rest, the hand's path 0.9-1.4 mm at every try (its
-// end poses 0.0) and so not taken, the direct path 135 mm and the best of 48 routed candidates
-// 120.8 mm, the forearm through the torso; 38 such rest transitions 20-135 mm deep. Each try is
-// measured only as far as it stays within the best found so far (plan_hand_path_bowed's ceiling),
-// so a try that cannot win stops early. Returns the winner's excess in *excess_m.
+// states, must be states of a path the arm can take. The tries plan_hand_path rejected were
+// never measured against the routes (each stops at its first state past the ends + 0.5 mm).
+// Measured on the corpus (every 2nd clean sign; best route -> least-deep hand path): GROUP1D's
+// rest-in 5.3 -> 2.7 mm, TONSILS1A's 8.5 -> 5.0, anioł's 70.9 -> 28.3, odpoczynek's 78.1 -> 63.0,
+// INTEREST1B's lowering 119.7 -> 93.5 (before sign_motion.cpp stopped its hand at the body). Each
+// try is measured only as far as it stays within the best found so far (plan_hand_path_bowed's
+// ceiling), so a try that cannot win stops early. Returns the winner's excess in *excess_m.
 bool plan_hand_path_least_deep(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                                std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct,
                                float within_m, TransitionPlan* out, float* excess_m) {
