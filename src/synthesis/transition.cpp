@@ -1070,9 +1070,12 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   const float hand_ceiling_m = std::max(ends_from.hand_m, ends_to.hand_m) + kNothingAdded_m;
   const float arm_ceiling_m = std::max(ends_from.arm_m, ends_to.arm_m) + kNothingAdded_m;
   auto is_deeper = [&](const KindDepths& d) { return d.hand_m > hand_ceiling_m || d.arm_m > arm_ceiling_m; };
+  // The arm-joint mask as bytes (a std::vector<bool> costs a shift and a mask per read) for the
+  // step loop below, which reads it for every joint of every state.
+  const std::vector<char> arm_joint_bytes(arm_joints.begin(), arm_joints.end());
   auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
-    std::vector<glm::vec3> prev(J), cur(J);
+    std::vector<glm::vec3> prev(J);
     *step_m = 0.0f;
     finger_step_m = 0.0f;
     *d = KindDepths{};
@@ -1083,13 +1086,23 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
       for (size_t n = 0; n < arms_n; ++n)
         arm_pos[static_cast<size_t>(i) * arms_n + n] =
             accel_points.scale[n] * pb.position(accel_points.joints[n]);
+      // The longest steps as squares, one square root per kind and state: glm::length is the
+      // square root of glm::dot, and the square root keeps the order (IEEE, correctly rounded),
+      // so the root of the largest square is the largest length to the bit.
+      float arm_step_sq = 0.0f, finger_step_sq = 0.0f;
       for (int j = 0; j < J; ++j) {
-        cur[j] = pb.position(j);
-        if (i == 0) continue;
-        float& longest = arm_joints[static_cast<size_t>(j)] ? *step_m : finger_step_m;
-        longest = std::max(longest, glm::length(cur[j] - prev[j]));
+        const glm::vec3& cur = pb.position(j);
+        if (i > 0) {
+          const glm::vec3 step = cur - prev[static_cast<size_t>(j)];
+          float& longest_sq = arm_joint_bytes[static_cast<size_t>(j)] ? arm_step_sq : finger_step_sq;
+          longest_sq = std::max(longest_sq, glm::dot(step, step));
+        }
+        prev[static_cast<size_t>(j)] = cur;
       }
-      std::swap(prev, cur);
+      if (i > 0) {
+        *step_m = std::max(*step_m, std::sqrt(arm_step_sq));
+        finger_step_m = std::max(finger_step_m, std::sqrt(finger_step_sq));
+      }
       if (i == 0 || i == p.k || *step_m > abandon_step_m || finger_step_m > abandon_finger_step_m) continue;
       if (is_deeper(*d)) continue;
       const std::uint8_t ex = p.exempt[static_cast<size_t>(i - 1)];
