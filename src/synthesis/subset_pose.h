@@ -32,6 +32,12 @@ class SubsetPose {
   std::vector<int> joints_;
   std::vector<glm::quat> model_, delta_;  // indexed by joint (only the subset's entries are set)
   std::vector<glm::vec3> pos_;
+  // PoseBuilder's incremental rule: the previous frame's local rotations and, per joint, whether
+  // that call recomputed it; a joint with the same local rotation (bit for bit) under a parent
+  // left alone keeps its values (the trunk's, in a transition whose ends share it).
+  std::vector<glm::quat> last_local_;
+  std::vector<char> recomputed_;
+  bool last_valid_ = false;
 };
 
 }  // namespace sw::synthesis
