@@ -464,10 +464,36 @@ struct Solver {
   // near_swivel: the swivel the hand has where this state is reached from (a movement's goal:
   // the state before it), so the sign's key poses choose neighbouring swivels (arm_ik.h
   // ArmTarget::near_swivel_rad); null for the sign's first key pose.
+  // solve_handshape of a side and shape, solved once per sign: its thumb contact is a
+  // Levenberg-Marquardt solve (about 0.27 M instructions), and a sign's key states ask for the
+  // same shape again (the state turned with the trunk, each movement's goal, both hands of a
+  // symmetric sign). solve_handshape reads only the side and the five finger configurations, so a
+  // remembered result is the one it would return.
+  struct SolvedShape {
+    Side side;
+    std::array<notation::FingerConfig, notation::kFingerCount> fingers;
+    HandAngles angles;
+  };
+  std::vector<SolvedShape> solved_shapes;
+  static bool same_fingers(const std::array<notation::FingerConfig, notation::kFingerCount>& a,
+                           const std::array<notation::FingerConfig, notation::kFingerCount>& b) {
+    for (size_t k = 0; k < a.size(); ++k)
+      if (a[k].id != b[k].id || a[k].has_t != b[k].has_t || std::memcmp(&a[k].t, &b[k].t, sizeof(float)) != 0 ||
+          std::memcmp(&a[k].spread, &b[k].spread, sizeof(float)) != 0)
+        return false;
+    return true;
+  }
+  HandAngles handshape(Side side, const notation::HandShape& shape) {
+    for (const SolvedShape& s : solved_shapes)
+      if (s.side == side && same_fingers(s.fingers, shape.fingers)) return s.angles;
+    solved_shapes.push_back({side, shape.fingers, solve_handshape(rig, side, shape)});
+    return solved_shapes.back().angles;
+  }
+
   HandState key_state(const HandPlan& plan, const notation::HandSpec& spec, bool* ok,
                       PartPoint* anchor_out, const float* near_swivel = nullptr) {
     HandState st;
-    st.angles = solve_handshape(rig, plan.side, spec.shape);
+    st.angles = handshape(plan.side, spec.shape);
     st.delta = hand_delta_for(rig, plan.side, orientation_frame(rig, spec.orientation, plan.side, plan.mirror_x));
     HandPlace place;
     int finger;

@@ -9,6 +9,7 @@
 #include "math/quat_lanes.h"
 #include "synthesis/arm_ik.h"
 #include "synthesis/movement.h"
+#include "synthesis/subset_pose.h"
 
 namespace sw::synthesis {
 
@@ -336,6 +337,33 @@ void interpolate_chain(const Rig& rig, const glm::quat* a, const glm::quat* b,
 // longest rest transition's joint path (1.5 m) is measured in steps of about 6 cm.
 constexpr int kPathSamples = 24;
 
+// path_length's measure of only the `counted` joints' paths, along `samples` (kPathSamples - 1
+// states) from a to b: those joints and their ancestors posed (SubsetPose), not the skeleton.
+// Per counted joint the same chords summed in the same order as path_length's full pose, so the
+// same length to the bit; the full pose skipped a joint it left alone (an exact 0 chord), which
+// added here leaves the sum as it is.
+float counted_path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, const std::vector<glm::quat>& samples,
+                          const std::vector<bool>& counted) {
+  const int J = rig.joint_count;
+  std::vector<int> wanted;
+  for (int j = 0; j < J; ++j)
+    if (counted[static_cast<size_t>(j)]) wanted.push_back(j);
+  SubsetPose pose(rig, wanted);
+  std::vector<glm::vec3> prev(wanted.size());
+  std::vector<float> length(wanted.size(), 0.0f);
+  for (int i = 0; i <= kPathSamples; ++i) {
+    pose.set_from_local(i == 0 ? a : i == kPathSamples ? b : &samples[static_cast<size_t>(i - 1) * J]);
+    for (size_t n = 0; n < wanted.size(); ++n) {
+      const glm::vec3& cur = pose.position(wanted[n]);
+      if (i > 0) length[n] += glm::length(cur - prev[n]);
+      prev[n] = cur;
+    }
+  }
+  float longest = 0.0f;
+  for (float l : length) longest = std::max(longest, l);
+  return longest;
+}
+
 // The longest distance any joint travels along an interpolation (interpolate's arguments).
 // `sample(k, out)` writes the k-1 intermediate states of the path from a to b (interpolate's form).
 // `counted` (optional, per joint): only those joints' paths enter the maximum.
@@ -345,6 +373,7 @@ float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sample
   const int J = rig.joint_count;
   std::vector<glm::quat> samples;
   sample(kPathSamples, &samples);
+  if (counted) return counted_path_length(rig, a, b, samples, *counted);
   PoseBuilder pb(rig);
   std::vector<glm::vec3> prev(J);
   std::vector<float> length(J, 0.0f);
@@ -359,12 +388,6 @@ float path_length(const Rig& rig, const glm::quat* a, const glm::quat* b, Sample
       if (i > 0) length[j] += glm::length(cur - prev[j]);
       prev[j] = cur;
     }
-  }
-  if (counted) {
-    float longest = 0.0f;
-    for (int j = 0; j < J; ++j)
-      if ((*counted)[static_cast<size_t>(j)]) longest = std::max(longest, length[j]);
-    return longest;
   }
   return J > 0 ? *std::max_element(length.begin(), length.end()) : 0.0f;
 }
@@ -498,7 +521,7 @@ float arm_accel(const Rig& rig, const glm::quat* from, const glm::quat* to, cons
   const AccelPoints points = accel_point_list(rig);
   const size_t n_points = points.joints.size();
   std::vector<glm::vec3> pos(static_cast<size_t>(k + 1) * n_points);
-  PoseBuilder pb(rig);
+  SubsetPose pb(rig, points.joints);  // the arms and fingertips only: legs, head and eyes left out
   for (int i = 0; i <= k; ++i) {
     pb.set_from_local(i == 0 ? from : i == k ? to : &frames[static_cast<size_t>(i - 1) * J]);
     for (size_t n = 0; n < n_points; ++n)
@@ -1049,9 +1072,12 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   const float hand_ceiling_m = std::max(ends_from.hand_m, ends_to.hand_m) + added_m;
   const float arm_ceiling_m = std::max(ends_from.arm_m, ends_to.arm_m) + added_m;
   auto is_deeper = [&](const KindDepths& d) { return d.hand_m > hand_ceiling_m || d.arm_m > arm_ceiling_m; };
+  // The arm-joint mask as bytes (a std::vector<bool> costs a shift and a mask per read) for the
+  // step loop below, which reads it for every joint of every state.
+  const std::vector<char> arm_joint_bytes(arm_joints.begin(), arm_joints.end());
   auto measure = [&](float* step_m, KindDepths* d, float abandon_step_m, float abandon_finger_step_m) {
     PoseBuilder pb(rig);
-    std::vector<glm::vec3> prev(J), cur(J);
+    std::vector<glm::vec3> prev(J);
     *step_m = 0.0f;
     finger_step_m = 0.0f;
     *d = KindDepths{};
@@ -1062,13 +1088,23 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
       for (size_t n = 0; n < arms_n; ++n)
         arm_pos[static_cast<size_t>(i) * arms_n + n] =
             accel_points.scale[n] * pb.position(accel_points.joints[n]);
+      // The longest steps as squares, one square root per kind and state: glm::length is the
+      // square root of glm::dot, and the square root keeps the order (IEEE, correctly rounded),
+      // so the root of the largest square is the largest length to the bit.
+      float arm_step_sq = 0.0f, finger_step_sq = 0.0f;
       for (int j = 0; j < J; ++j) {
-        cur[j] = pb.position(j);
-        if (i == 0) continue;
-        float& longest = arm_joints[static_cast<size_t>(j)] ? *step_m : finger_step_m;
-        longest = std::max(longest, glm::length(cur[j] - prev[j]));
+        const glm::vec3& cur = pb.position(j);
+        if (i > 0) {
+          const glm::vec3 step = cur - prev[static_cast<size_t>(j)];
+          float& longest_sq = arm_joint_bytes[static_cast<size_t>(j)] ? arm_step_sq : finger_step_sq;
+          longest_sq = std::max(longest_sq, glm::dot(step, step));
+        }
+        prev[static_cast<size_t>(j)] = cur;
       }
-      std::swap(prev, cur);
+      if (i > 0) {
+        *step_m = std::max(*step_m, std::sqrt(arm_step_sq));
+        finger_step_m = std::max(finger_step_m, std::sqrt(finger_step_sq));
+      }
       if (i == 0 || i == p.k || *step_m > abandon_step_m || finger_step_m > abandon_finger_step_m) continue;
       if (is_deeper(*d)) continue;
       const std::uint8_t ex = p.exempt[static_cast<size_t>(i - 1)];
