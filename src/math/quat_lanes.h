@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 #include <glm/glm.hpp>
@@ -64,6 +65,16 @@ inline Float4 cross3(Float4 a, Float4 b) {
 inline Float4 quat_rotate(Float4 q, Float4 v) {
   const Float4 uv = cross3(q, v), uuv = cross3(q, uv);
   return v + ((uv * q[3]) + uuv) * 2.0f;
+}
+
+// Bitwise equality of two quaternions: the incremental posing rule (PoseBuilder, SubsetPose)
+// keeps a joint whose local rotation has the same bits. Not memcmp: em++ keeps that a libc call
+// per joint, which cost more than it saved; four integer compares inline everywhere.
+inline bool same_bits(const glm::quat& a, const glm::quat& b) {
+  std::uint32_t x[4], y[4];
+  std::memcpy(x, &a, sizeof x);
+  std::memcpy(y, &b, sizeof y);
+  return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | (x[2] ^ y[2]) | (x[3] ^ y[3])) == 0;
 }
 
 }  // namespace sw::math::lanes

@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -186,19 +184,6 @@ bool build_rig(const avatar::Avatar& avatar, Rig* rig, std::string* error) {
   return true;
 }
 
-namespace {
-
-// Bitwise equality of two quaternions. Not memcmp: em++ keeps that a libc call per joint, which
-// cost more than it saved; four integer compares inline everywhere.
-inline bool same_bits(const glm::quat& a, const glm::quat& b) {
-  std::uint32_t x[4], y[4];
-  std::memcpy(x, &a, sizeof x);
-  std::memcpy(y, &b, sizeof y);
-  return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | (x[2] ^ y[2]) | (x[3] ^ y[3])) == 0;
-}
-
-}  // namespace
-
 PoseBuilder::PoseBuilder(const Rig& r)
     : rig(&r), delta_(r.joint_count, glm::quat(1, 0, 0, 0)), is_set_(r.joint_count, 0),
       pos_(r.joint_count) {}
@@ -240,7 +225,7 @@ void PoseBuilder::set_from_local(const glm::quat* local) {
     // Same local rotation (bitwise: -0 vs +0 or NaNs count as changed) under an unchanged parent:
     // model rotation, delta and position are what the previous call left.
     if (incremental && (p < 0 || !recomputed_[p]) &&
-        same_bits(local[j], last_local_[j])) {
+        math::lanes::same_bits(local[j], last_local_[j])) {
       recomputed_[j] = 0;
       continue;
     }

@@ -1,24 +1,10 @@
 // SubsetPose: forward kinematics of a subset of joints (see subset_pose.h).
 #include "synthesis/subset_pose.h"
 
-#include <cstdint>
-#include <cstring>
 
 #include "math/quat_lanes.h"
 
 namespace sw::synthesis {
-namespace {
-
-// Bitwise equality of two quaternions (rig.cpp's: four integer compares, not a memcmp call).
-inline bool same_bits(const glm::quat& a, const glm::quat& b) {
-  std::uint32_t x[4], y[4];
-  std::memcpy(x, &a, sizeof x);
-  std::memcpy(y, &b, sizeof y);
-  return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | (x[2] ^ y[2]) | (x[3] ^ y[3])) == 0;
-}
-
-}  // namespace
-
 SubsetPose::SubsetPose(const Rig& rig, const std::vector<int>& wanted)
     : rig_(rig), model_(static_cast<size_t>(rig.joint_count)), delta_(static_cast<size_t>(rig.joint_count)),
       pos_(static_cast<size_t>(rig.joint_count)), last_local_(static_cast<size_t>(rig.joint_count)),
@@ -42,7 +28,7 @@ void SubsetPose::set_from_local(const glm::quat* local) {
   for (int j : joints_) {
     const int p = r.parent[static_cast<size_t>(j)];
     if (last_valid_ && (p < 0 || !recomputed_[static_cast<size_t>(p)]) &&
-        same_bits(local[j], last_local_[static_cast<size_t>(j)])) {
+        math::lanes::same_bits(local[j], last_local_[static_cast<size_t>(j)])) {
       recomputed_[static_cast<size_t>(j)] = 0;
       continue;
     }
