@@ -373,4 +373,83 @@ float arm_trunk_depth(const BodyModel& body, Side side, const ArmSegments& arm, 
   return worst.depth_m;
 }
 
+TrunkCrossing trunk_crossing(const BodyModel& body, const PoseBuilder& pose, const glm::vec3& from,
+                             const glm::vec3& to, float allowed_m) {
+  // Capsules as segments (a, b) and radii: the trunk's, posed, and the shoulders'.
+  constexpr size_t kMax = 10;
+  std::array<glm::vec3, kMax> a{}, b{};
+  std::array<float, kMax> r{};
+  size_t n = 0;
+  for (const Capsule& c : body.trunk) {
+    if (n == kMax) break;
+    a[n] = pose.attached(c.joint, c.a);
+    b[n] = pose.attached(c.joint, c.b);
+    r[n++] = c.radius_m;
+  }
+  // The shoulders too: the torso capsules' round tops leave the gap between the neck and each
+  // shoulder joint open, and a movement "in" at the shoulders (CHANCE1's, BIRTHDAY5's hamshoulders
+  // hamclose hammovei hamtouch) passed over the torso beside the neck and out behind the body, the
+  // elbow up behind the head. Each shoulder: the neck's base to the shoulder joint, as thick as
+  // the upper arm (joined to the torso there, it is not part of the trunk's collision checks).
+  const Rig& rig = *pose.rig;
+  for (const Capsule& c : body.trunk) {
+    if (c.name != "neck") continue;
+    for (int side = 0; side < 2 && n < kMax; ++side) {
+      const Capsule& u = body.upper_arm[side];
+      if (u.joint < 0 || rig.parent[u.joint] < 0) continue;
+      a[n] = pose.attached(c.joint, c.a);
+      b[n] = pose.attached(rig.parent[u.joint], u.a);
+      r[n++] = u.radius_m;
+    }
+    break;
+  }
+  // A point's depth: the deepest capsule's (radius minus axis distance), and which capsule.
+  auto depth = [&](const glm::vec3& p, size_t* which) {
+    float d = -1.0f;
+    for (size_t i = 0; i < n; ++i) {
+      const float di = r[i] - segment_distance(p, a[i], b[i]);
+      if (di > d) {
+        d = di;
+        if (which) *which = i;
+      }
+    }
+    return d;
+  };
+  TrunkCrossing out;
+  out.stop = to;
+  const float limit = std::max(depth(from, nullptr), 0.0f) + allowed_m;
+  // Most lines of most signs pass no capsule that deep anywhere: one segment distance each says so.
+  bool near = false;
+  for (size_t i = 0; i < n && !near; ++i) near = r[i] - segment_segment_distance(from, to, a[i], b[i]) > limit;
+  if (!near) return out;
+  // Samples 1 cm or closer along the line (a capsule is 8-20 cm across: none is stepped over),
+  // then the crossing bisected to 1 mm.
+  const float length = glm::length(to - from);
+  const int samples = std::max(1, std::min(64, static_cast<int>(std::ceil(length / 0.01f))));
+  float lo = 0.0f;
+  for (int k = 1; k <= samples; ++k) {
+    const float s = static_cast<float>(k) / samples;
+    size_t which = 0;
+    if (depth(from + s * (to - from), &which) <= limit) {
+      lo = s;
+      continue;
+    }
+    // Through: `to` on the far side of the capsule's axis from `from` (more than 105 degrees
+    // round it). A line from one place on the body to another round it (DEAF's ear to the mouth,
+    // 90 degrees round the head) cuts the capsule's chord but does not go through.
+    const glm::vec3 axis_from = closest_on_segment(from, a[which], b[which]);
+    const glm::vec3 axis_to = closest_on_segment(to, a[which], b[which]);
+    out.through = glm::dot(safe_normalize(from - axis_from, rig.forward), safe_normalize(to - axis_to, rig.forward)) <
+                  -0.25f;
+    float hi = s;
+    while ((hi - lo) * length > 0.001f) {
+      const float mid = 0.5f * (lo + hi);
+      (depth(from + mid * (to - from), nullptr) <= limit ? lo : hi) = mid;
+    }
+    out.stop = from + lo * (to - from);
+    return out;
+  }
+  return out;
+}
+
 }  // namespace sw::synthesis

@@ -79,4 +79,21 @@ Penetration arm_penetration(const BodyModel& body, const PoseBuilder& pose, Side
 float arm_trunk_depth(const BodyModel& body, Side side, const ArmSegments& arm, bool hand_contact,
                       glm::vec3* push_dir = nullptr);
 
+// A point moving in a straight line from `from` to `to` (a hand's contact point on a movement,
+// model space) against the trunk capsules (posed as in `pose`) and the shoulders (the neck's base
+// to each shoulder joint, as thick as the upper arm): `stop`, where the line first goes deeper
+// than `from` is plus `allowed_m` (to 1 mm; `to` when it never does), and `through`, whether it
+// goes through there (`to` on the far side of that capsule's axis). A hand touches the body, it
+// does not pass through it: HamNoSys's contact ends a movement at the body (HamNoSys 4 manual,
+// contact), and a movement "in" from a place close to the shoulders (the corpus's hamshoulders
+// hamclose hammovei hamtouch) took the touching hand, exempt from the trunk, out behind the body,
+// the elbow 28 cm behind the shoulder; the rest transition from there swung the arm up to 135 mm
+// through the torso (sign_motion.cpp stops such a hand's movements at `stop`).
+struct TrunkCrossing {
+  glm::vec3 stop{0.0f};
+  bool through = false;
+};
+TrunkCrossing trunk_crossing(const BodyModel& body, const PoseBuilder& pose, const glm::vec3& from,
+                             const glm::vec3& to, float allowed_m);
+
 }  // namespace sw::synthesis

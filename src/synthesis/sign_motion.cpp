@@ -464,10 +464,36 @@ struct Solver {
   // near_swivel: the swivel the hand has where this state is reached from (a movement's goal:
   // the state before it), so the sign's key poses choose neighbouring swivels (arm_ik.h
   // ArmTarget::near_swivel_rad); null for the sign's first key pose.
+  // solve_handshape of a side and shape, solved once per sign: its thumb contact is a
+  // Levenberg-Marquardt solve (about 0.27 M instructions), and a sign's key states ask for the
+  // same shape again (the state turned with the trunk, each movement's goal, both hands of a
+  // symmetric sign). solve_handshape reads only the side and the five finger configurations, so a
+  // remembered result is the one it would return.
+  struct SolvedShape {
+    Side side;
+    std::array<notation::FingerConfig, notation::kFingerCount> fingers;
+    HandAngles angles;
+  };
+  std::vector<SolvedShape> solved_shapes;
+  static bool same_fingers(const std::array<notation::FingerConfig, notation::kFingerCount>& a,
+                           const std::array<notation::FingerConfig, notation::kFingerCount>& b) {
+    for (size_t k = 0; k < a.size(); ++k)
+      if (a[k].id != b[k].id || a[k].has_t != b[k].has_t || std::memcmp(&a[k].t, &b[k].t, sizeof(float)) != 0 ||
+          std::memcmp(&a[k].spread, &b[k].spread, sizeof(float)) != 0)
+        return false;
+    return true;
+  }
+  HandAngles handshape(Side side, const notation::HandShape& shape) {
+    for (const SolvedShape& s : solved_shapes)
+      if (s.side == side && same_fingers(s.fingers, shape.fingers)) return s.angles;
+    solved_shapes.push_back({side, shape.fingers, solve_handshape(rig, side, shape)});
+    return solved_shapes.back().angles;
+  }
+
   HandState key_state(const HandPlan& plan, const notation::HandSpec& spec, bool* ok,
                       PartPoint* anchor_out, const float* near_swivel = nullptr) {
     HandState st;
-    st.angles = solve_handshape(rig, plan.side, spec.shape);
+    st.angles = handshape(plan.side, spec.shape);
     st.delta = hand_delta_for(rig, plan.side, orientation_frame(rig, spec.orientation, plan.side, plan.mirror_x));
     HandPlace place;
     int finger;
@@ -2109,6 +2135,34 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // 4.7 mm deep (MotionSmoothness.EveryLexiconSignMovesHumanlyAndKeepsItsArmsOut...); nothing
   // else in the lexicon changes.
   constexpr float kRampOnlyClearM = 0.0049f;
+  // How much deeper than the key pose's place a movement's contact point may go into the trunk
+  // (trunk_crossing's allowed_m): a touch's acceptance, 1 cm.
+  constexpr float kMovementStopDepthM = 0.01f;
+  // Which hands stop at the body (collision.h trunk_crossing). A hand moved only by directions
+  // (HamNoSys's hamchest hamclose hammovei hamtouch: in to the chest and touch) goes no further
+  // in than the body: a direction's amplitude is a size, not a place, and the touch that ends it
+  // is at the body (FEAR1's, SICK1's fist 5 cm into the chest, the forearm 33 mm in the torso
+  // behind it). A hand with a movement to a place (DEAF's ear to the mouth) goes between places
+  // on the body: its straight line may cut a chord of the head and stays as written, unless at
+  // some frame it goes through the body (its target past the far side of a capsule's axis). Every
+  // frame of a stopping hand stops, so its path halts at the body instead of going in and jumping
+  // back.
+  std::array<bool, 2> stops_at_body = {false, false};
+  for (int i = 0; i < 2 && ctx.options.avoid_collisions; ++i) {
+    if (!plans[i].active || plans[i].on_other_hand) continue;
+    bool to_place = false;
+    for (const auto& step : plans[i].steps)
+      for (const Movement& m : step) to_place = to_place || (m.kind == MovementKind::Target && m.to_location);
+    // Checked once per target along the sign, against the trunk at rest: a hand none of whose
+    // targets would stop is not checked frame by frame (no lexicon sign's is).
+    const glm::vec3& from = frames[0].hand[i].target;
+    for (size_t f = 1; f < frames.size() && !stops_at_body[i]; ++f) {
+      const glm::vec3& to = frames[f].hand[i].target;
+      if (to == frames[f - 1].hand[i].target) continue;
+      const TrunkCrossing c = trunk_crossing(ctx.body, rest, from, to, kMovementStopDepthM);
+      stops_at_body[i] = c.stop != to && (!to_place || c.through);
+    }
+  }
   auto solve_frames = [&](const std::vector<char>* redo) {
     if (!redo || (*redo)[0]) {
       out->max_reach_error_m = 0.0f;
@@ -2156,6 +2210,9 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
           PartPoint place = solver.other_hand_place(pb, plan);
           t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
         }
+        // The contact point stops at the body (stops_at_body, above), the line from the key pose's.
+        if (stops_at_body[i] && f > 0)
+          t.point = trunk_crossing(ctx.body, pb, frames[0].hand[i].target, t.point, kMovementStopDepthM).stop;
         t.contact_offset = h.offset;
         if (wrist_led[i]) {
           t.point += wrist_from_contact[i];

@@ -913,6 +913,52 @@ TEST(SynthesisCollision, MirroredHandsAtTheCentreKeepOutOfEachOthersForearm) {
   }
 }
 
+// collision.h trunk_crossing: a line from in front of the chest straight back stops at the chest
+// and goes through the body; one in front of the body is left as it is; one from the side of the
+// head round to the front of the face (DEAF's ear to the mouth) cuts the head's chord without going
+// through it.
+TEST(SynthesisCollision, TrunkCrossingStopsALineThatGoesThroughTheBody) {
+  avatar::Avatar av = make_reference_humanoid();
+  SynthContext ctx;
+  std::string error;
+  ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
+  PoseBuilder rest(ctx.rig);
+  rest.set_from_local(ctx.rest_locals.data());
+  const Capsule* torso = nullptr;
+  const Capsule* head = nullptr;
+  for (const Capsule& c : ctx.body.trunk) {
+    if (!torso && c.name.rfind("torso", 0) == 0) torso = &c;
+    if (c.name == "head") head = &c;
+  }
+  ASSERT_TRUE(torso && head);
+  const glm::vec3 fwd = ctx.rig.forward, left = ctx.rig.left;
+  // The chest: the torso capsule's middle, on the body's centre line.
+  glm::vec3 chest = 0.5f * (torso->a + torso->b);
+  chest -= glm::dot(chest, left) * left;
+  const float torso_front = 0.2f;  // beyond any torso's radius
+  const glm::vec3 in_front = chest + fwd * torso_front, behind = chest - fwd * torso_front;
+  const TrunkCrossing through = trunk_crossing(ctx.body, rest, in_front, behind, 0.01f);
+  EXPECT_TRUE(through.through);
+  // Stopped at the chest's front: no deeper than 1 cm into any trunk capsule, and in front of the
+  // chest's centre.
+  float deepest = -1.0f;
+  for (const Capsule& c : ctx.body.trunk)
+    deepest = std::max(deepest, c.radius_m - segment_distance(through.stop, c.a, c.b));
+  EXPECT_LE(deepest, 0.0105f);
+  EXPECT_GT(glm::dot(through.stop - chest, fwd), 0.05f);
+  // Across the front of the body, 20 cm ahead of it: untouched.
+  const glm::vec3 across = in_front + 0.3f * left;
+  const TrunkCrossing clear = trunk_crossing(ctx.body, rest, in_front - 0.3f * left, across, 0.01f);
+  EXPECT_FALSE(clear.through);
+  EXPECT_EQ(clear.stop, across);
+  // The side of the head to the front of the face, both on the head's surface: a chord, not
+  // through (it stops, but sign_motion.cpp stops only hands whose lines go through or that move
+  // by directions alone).
+  const glm::vec3 head_mid = 0.5f * (head->a + head->b);
+  const glm::vec3 ear = head_mid - left * head->radius_m, mouth = head_mid + fwd * head->radius_m;
+  EXPECT_FALSE(trunk_crossing(ctx.body, rest, ear, mouth, 0.01f).through);
+}
+
 }  // namespace
 }  // namespace sw::synthesis
 

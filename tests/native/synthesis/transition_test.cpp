@@ -9,6 +9,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "notation/parse.h"
 #include "synthesis/collision.h"
 #include "synthesis/sign_motion.h"
 #include "synthesis_fixture.h"
@@ -320,6 +321,29 @@ TEST(SynthesisTransition, PenetrationMemoGivesWhatTheChecksGive) {
   moved[static_cast<size_t>(worst) * J + hand] *= axis_angle(glm::vec3(1, 0, 0), 0.4f);
   const auto moved_plain = check(ctx, moved, none);
   EXPECT_EQ(check(with_memo, moved, none), moved_plain);
+}
+
+// A rest transition that neither the hand's path (adding nothing beyond its end poses) nor any
+// via-pose or waypoint chain clears took the best route (transition.cpp): the hand's path tries,
+// rejected at the first state deeper than the ends + 0.5 mm, were never measured against it.
+// plan_hand_path_least_deep takes the try that adds least where it beats the route. Hand-written
+// minimal HamNoSys of the corpus's form (its GROUP1D: 5.3 mm routed, 2.7 mm along the hand's path):
+// mirrored C hands, fingers out-left, palms left, moving left to touch, on the project avatar.
+TEST(SynthesisTransition, ARestTransitionNoRouteClearsTakesTheHandsPathThatAddsLeast) {
+  ProjectAvatar project = load_project_avatar();
+  if (!project.present) GTEST_SKIP() << "models/signweave-avatar.glb not found";
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  // hamsymmlr hamcee12 [hamthumbopenmod] hamextfingerol hampalml hammovel hamtouch
+  const std::string cee = "\xee\x83\xa9\xee\x80\x89", thumb_open = "\xee\x80\x8e";
+  const std::string rest_of_it = "\xee\x80\xa8\xee\x80\xbe\xee\x82\x86\xee\x83\x91";
+  for (const std::string& hns : {cee + thumb_open + rest_of_it, cee + rest_of_it}) {
+    const std::vector<notation::SignParse> parsed = notation::parse_signs(hns, notation::NotationFormat::HamNoSys);
+    ASSERT_FALSE(parsed.empty());
+    ASSERT_TRUE(parsed[0].ok() && parsed[0].spec);
+    const SynthesisResult r = synthesize_sign(*parsed[0].spec, project.avatar, SynthesisOptions{});
+    ASSERT_TRUE(r.ok());
+    EXPECT_LE(r.report.max_penetration_m, 0.005f) << (hns.size() > cee.size() + rest_of_it.size() ? "thumb open" : "");
+  }
 }
 
 }  // namespace
