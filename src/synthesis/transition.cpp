@@ -621,15 +621,27 @@ struct HandPathTry {
   float bow_m;
   bool search_swivel;
   float apart_m;  // hands_apart_dirs: each wrist held off the other hand by this much on the way
+  // With apart_m: how far ahead of the way the hand turns to its orientation at the sign
+  // (hand_path_waypoint: the share of the way to the sign's times this, at most all of it).
+  float turn_ahead;
 };
-constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f},
-                                          {kHandPathForwardBow_m, true, 0.0f},
-                                          {0.12f, true, 0.0f},
-                                          {0.20f, true, 0.0f},
-                                          {0.28f, true, 0.0f},
-                                          // hands_meet_at_sign's tries, last (hand_path_try_count)
-                                          {kHandPathForwardBow_m, true, 0.05f},
-                                          {0.12f, true, 0.08f}};
+constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0.0f},
+                                          {kHandPathForwardBow_m, true, 0.0f, 0.0f},
+                                          {0.12f, true, 0.0f, 0.0f},
+                                          {0.20f, true, 0.0f, 0.0f},
+                                          {0.28f, true, 0.0f, 0.0f},
+                                          // hands_meet_at_sign's tries, last (hand_path_try_count).
+                                          // Measured on the corpus sample (over 5 mm): the first
+                                          // two 140 -> 127, the 12 cm ones 124, the two turning
+                                          // ahead 1.5 times (the last waypoint at the sign's
+                                          // orientation) 120; turning ahead alone, the C pair of
+                                          // SynthesisTransition.HandsThatTouchAtTheSign... was deep.
+                                          {kHandPathForwardBow_m, true, 0.05f, 1.0f},
+                                          {0.12f, true, 0.08f, 1.0f},
+                                          {kHandPathForwardBow_m, true, 0.12f, 1.0f},
+                                          {0.20f, true, 0.12f, 1.0f},
+                                          {kHandPathForwardBow_m, true, 0.05f, 1.5f},
+                                          {0.12f, true, 0.08f, 1.5f}};
 // The tries above without the hands-apart ones: a rest transition whose sign's hands do not touch
 // each other has no use for them.
 constexpr int kHandPathPlainTries = 5;
@@ -753,7 +765,8 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
                                           std::array<ArmPose, 2>* previous, bool has_previous, float bow_m,
                                           bool search_swivel, const ThoraxFrame& frame_from,
                                           const ThoraxFrame& frame_to, float apart_m,
-                                          const std::array<glm::vec3, 2>& apart_dir, bool sign_at_end) {
+                                          const std::array<glm::vec3, 2>& apart_dir, float turn_ahead,
+                                          bool sign_at_end) {
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
   std::vector<glm::quat> at(J);
@@ -789,7 +802,7 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
       // while closing, the fingers swept into the other hand at 86 % of the path (the roof of
       // the corpus's HOUSE1B, 16 mm).
       const PoseBuilder& sign = sign_at_end ? pt : pf;
-      const float w = sign_at_end ? s : 1.0f - s;
+      const float w = std::min(1.0f, turn_ahead * (sign_at_end ? s : 1.0f - s));
       t.hand_delta = glm::conjugate(frame_at.rotation) * slerp_shortest(pa.delta(a.hand), sign.delta(a.hand), w);
     }
     t.auto_swivel = false;
@@ -1082,7 +1095,8 @@ class DirectPathLength {
 // stand, so the collision remedies are unchanged wherever the hand's path is not clear.
 bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                           std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, float bow_m,
-                          bool search_swivel, float apart_m, bool allow_longer, TransitionPlan* out, bool* deeper,
+                          bool search_swivel, float apart_m, float turn_ahead, bool allow_longer, TransitionPlan* out,
+                          bool* deeper,
                           float added_m = 0.0005f) {
   *deeper = false;
   const Rig& rig = ctx.rig;
@@ -1102,7 +1116,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
     fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
     waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0, bow_m, search_swivel,
-                                      frame_from, frame_to, apart_m, apart_dir, rest_at_start);
+                                      frame_from, frame_to, apart_m, apart_dir, turn_ahead, rest_at_start);
   }
   const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
@@ -1275,7 +1289,7 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
     const HandPathTry& attempt = kHandPathTries[*next_try];
     bool deeper = false;
     if (plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
-                             attempt.search_swivel, attempt.apart_m, retry, out, &deeper))
+                             attempt.search_swivel, attempt.apart_m, attempt.turn_ahead, retry, out, &deeper))
       return true;
     // Not shorter than the direct path: the later tries, bowed further, are longer still.
     if (!deeper) return false;
@@ -1310,7 +1324,7 @@ bool plan_hand_path_least_deep(const SynthContext& ctx, const glm::quat* from, c
     TransitionPlan p;
     bool deeper = false;
     if (!plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
-                              attempt.search_swivel, attempt.apart_m, true, &p, &deeper, within_m))
+                              attempt.search_swivel, attempt.apart_m, attempt.turn_ahead, true, &p, &deeper, within_m))
       continue;
     const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
     const float excess = excess_over(d, hand_floor_m, arm_floor_m);

@@ -354,7 +354,8 @@ TEST(SynthesisTransition, ARestTransitionNoRouteClearsTakesTheHandsPathThatAddsL
 // hands_meet_at_sign). Hand-written minimal HamNoSys of the corpus's form: symmetric C hands,
 // fingers up, palms down-left, touching, moving down; on the project avatar 6.8 mm before (the
 // hands into each other on the way up from the rest), 5.5 mm with the wrists apart but the hands
-// still turning as they closed. Still open: the flat hands' roof (HOUSE1B's form, 13.6 mm).
+// still turning as they closed, 4.4 mm now. Still open: the flat hands' roof (HOUSE1B's form,
+// 13.6 mm).
 TEST(SynthesisTransition, HandsThatTouchAtTheSignMeetOnlyAtTheEndOfTheRestTransition) {
   ProjectAvatar project = load_project_avatar();
   if (!project.present) GTEST_SKIP() << "models/signweave-avatar.glb not found";
