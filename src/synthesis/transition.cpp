@@ -705,8 +705,9 @@ float pose_swivel(const Rig& rig, Side side, const PoseBuilder& pose, const glm:
 // Hands that come together: a rest transition into (or out of) a sign whose hands touch or nearly
 // touch each other (kHandsMeetWithin_m) with both wrists moving. On the
 // hand's path the two wrists run straight to their places at the sign and the hands meet part
-// way, before the exempt last third of the transition (transition_exempt): on the corpus 44 of
-// the 56 rest transitions over 5 mm were a hand 7-16 mm in the other hand there. Seed 004's
+// way, or turn into each other as they close: on the corpus sample 44 of the 56 rest transitions
+// over 5 mm were a hand 7-16 mm in the other hand, in frames with no hand-contact exemption (the
+// ones read had none on any frame, the key pose itself clear). Seed 004's
 // remedy (SOURCES.md section 1, eqs. (8)-(10)) is intermediate states; a signer brings the hands
 // together at the end, each approaching the other along the line between them (the contact's
 // normal): hands_apart_dirs gives each wrist that direction, away from the other hand, and the
@@ -746,8 +747,8 @@ std::array<glm::vec3, 2> hands_apart_dirs(const Rig& rig, const PoseBuilder& sig
 }
 
 // How much of apart_m a wrist is held off at fraction s of the hand's path: none at either end,
-// all of it from a third of the way to two thirds and most of it at the last waypoint (0.75:
-// 1.06 of it, capped) so the hands close only in the last quarter, in the exempt part.
+// all of it from s = 0.23 to 0.77 (1.5 sin(pi s) capped at 1), so at every waypoint (0.25, 0.5,
+// 0.75), and the hands close only in the last quarter.
 float hands_apart_share(float s) { return std::min(1.0f, 1.5f * std::sin(3.14159265f * s)); }
 
 // A waypoint on the hand's own path between two poses (pf, pt: them posed), a fraction `s` of the way: each arm whose
@@ -797,10 +798,10 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
     t.contact_offset = glm::vec3(0.0f);
     t.hand_delta = glm::conjugate(frame_at.rotation) * pa.delta(a.hand);
     if (apart_m > 0.0f) {
-      // Hands kept apart close in along the line between them; turned as at the sign already
-      // (most of the way by the last waypoint), so the last quarter only closes the gap: turning
-      // while closing, the fingers swept into the other hand at 86 % of the path (the roof of
-      // the corpus's HOUSE1B, 16 mm).
+      // Hands kept apart close in along the line between them; turned towards their orientation
+      // at the sign ahead of the way (turn_ahead), so the last quarter mostly closes the gap:
+      // turning while closing, the hand-written C pair of SynthesisTransition.HandsThatTouch...
+      // stayed 5.5 mm deep with the wrists apart (6.8 before).
       const PoseBuilder& sign = sign_at_end ? pt : pf;
       const float w = std::min(1.0f, turn_ahead * (sign_at_end ? s : 1.0f - s));
       t.hand_delta = glm::conjugate(frame_at.rotation) * slerp_shortest(pa.delta(a.hand), sign.delta(a.hand), w);
