@@ -620,9 +620,31 @@ constexpr float kHandPathForwardBow_m = 0.05f;
 struct HandPathTry {
   float bow_m;
   bool search_swivel;
+  float apart_m;  // hands_apart_dirs: each wrist held off the other hand by this much on the way
+  // With apart_m: how far ahead of the way the hand turns to its orientation at the sign
+  // (hand_path_waypoint: the share of the way to the sign's times this, at most all of it).
+  float turn_ahead;
 };
-constexpr HandPathTry kHandPathTries[] = {
-    {kHandPathForwardBow_m, false}, {kHandPathForwardBow_m, true}, {0.12f, true}, {0.20f, true}, {0.28f, true}};
+constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0.0f},
+                                          {kHandPathForwardBow_m, true, 0.0f, 0.0f},
+                                          {0.12f, true, 0.0f, 0.0f},
+                                          {0.20f, true, 0.0f, 0.0f},
+                                          {0.28f, true, 0.0f, 0.0f},
+                                          // hands_meet_at_sign's tries, last (hand_path_try_count).
+                                          // Measured on the corpus sample (over 5 mm): the first
+                                          // two 140 -> 127, the 12 cm ones 124, the two turning
+                                          // ahead 1.5 times (the last waypoint at the sign's
+                                          // orientation) 120; turning ahead alone, the C pair of
+                                          // SynthesisTransition.HandsThatTouchAtTheSign... was deep.
+                                          {kHandPathForwardBow_m, true, 0.05f, 1.0f},
+                                          {0.12f, true, 0.08f, 1.0f},
+                                          {kHandPathForwardBow_m, true, 0.12f, 1.0f},
+                                          {0.20f, true, 0.12f, 1.0f},
+                                          {kHandPathForwardBow_m, true, 0.05f, 1.5f},
+                                          {0.12f, true, 0.08f, 1.5f}};
+// The tries above without the hands-apart ones: a rest transition whose sign's hands do not touch
+// each other has no use for them.
+constexpr int kHandPathPlainTries = 5;
 constexpr float kHandPathWideBowFrom_m = 0.20f;
 
 // The frame of the trunk the arms hang from (the upper chest), in one pose of a transition whose
@@ -680,6 +702,55 @@ float pose_swivel(const Rig& rig, Side side, const PoseBuilder& pose, const glm:
   return std::atan2(glm::dot(elbow, outp), glm::dot(elbow, down));
 }
 
+// Hands that come together: a rest transition into (or out of) a sign whose hands touch or nearly
+// touch each other (kHandsMeetWithin_m) with both wrists moving. On the
+// hand's path the two wrists run straight to their places at the sign and the hands meet part
+// way, or turn into each other as they close: on the corpus sample 44 of the 56 rest transitions
+// over 5 mm were a hand 7-16 mm in the other hand, in frames with no hand-contact exemption (the
+// ones read had none on any frame, the key pose itself clear). Seed 004's
+// remedy (SOURCES.md section 1, eqs. (8)-(10)) is intermediate states; a signer brings the hands
+// together at the end, each approaching the other along the line between them (the contact's
+// normal): hands_apart_dirs gives each wrist that direction, away from the other hand, and the
+// hands-apart tries of kHandPathTries hold the wrists off by apart_m on the way.
+std::array<glm::vec3, 2> hand_centres(const Rig& rig, const PoseBuilder& pose);
+// Palm centres closer than this at the sign: hands that touch (the reader does not always mark
+// the contact: the corpus's HOUSE1B, symmetric flat hands touching as a roof, has no hand-contact
+// exemption at its key pose) or nearly so; a palm is about 10 cm long.
+constexpr float kHandsMeetWithin_m = 0.15f;
+bool hands_meet_at_sign(const Rig& rig, const PoseBuilder& pf, const PoseBuilder& pt, bool rest_at_start) {
+  for (const ArmRig& a : rig.arms)
+    if (glm::length(pt.position(a.hand) - pf.position(a.hand)) < 0.01f) return false;  // hand_path_waypoint's "stays"
+  const PoseBuilder& sign = rest_at_start ? pt : pf;
+  const std::array<glm::vec3, 2> centre = hand_centres(rig, sign);
+  return glm::length(centre[0] - centre[1]) < kHandsMeetWithin_m;
+}
+
+// The middle of each palm (wrist + half the palm along the fingers) in a pose.
+std::array<glm::vec3, 2> hand_centres(const Rig& rig, const PoseBuilder& pose) {
+  std::array<glm::vec3, 2> centre;
+  for (int s = 0; s < 2; ++s) {
+    const ArmRig& a = rig.arms[s];
+    centre[s] = pose.position(a.hand) + pose.delta(a.hand) * a.finger_dir * (0.5f * a.palm_length_m);
+  }
+  return centre;
+}
+
+// Per side, the direction from the other hand's centre (the middle of its palm) to this one's at
+// the sign's end of the transition: the way this hand keeps off the other on the way. Hands whose
+// centres coincide: each to its own side.
+std::array<glm::vec3, 2> hands_apart_dirs(const Rig& rig, const PoseBuilder& sign_pose) {
+  const std::array<glm::vec3, 2> centre = hand_centres(rig, sign_pose);
+  std::array<glm::vec3, 2> dir;
+  for (int s = 0; s < 2; ++s)
+    dir[s] = safe_normalize(centre[s] - centre[1 - s], s == kLeft ? rig.left : -rig.left);
+  return dir;
+}
+
+// How much of apart_m a wrist is held off at fraction s of the hand's path: none at either end,
+// all of it from s = 0.23 to 0.77 (1.5 sin(pi s) capped at 1), so at every waypoint (0.25, 0.5,
+// 0.75), and the hands close only in the last quarter.
+float hands_apart_share(float s) { return std::min(1.0f, 1.5f * std::sin(3.14159265f * s)); }
+
 // A waypoint on the hand's own path between two poses (pf, pt: them posed), a fraction `s` of the way: each arm whose
 // wrist moves is re-solved by the arm IK with its wrist on the straight line between its end
 // positions, its elbow swivel interpolated between the ends' and the hand turned as the direct
@@ -694,7 +765,9 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
                                           const PoseBuilder& pf, const PoseBuilder& pt, float s,
                                           std::array<ArmPose, 2>* previous, bool has_previous, float bow_m,
                                           bool search_swivel, const ThoraxFrame& frame_from,
-                                          const ThoraxFrame& frame_to) {
+                                          const ThoraxFrame& frame_to, float apart_m,
+                                          const std::array<glm::vec3, 2>& apart_dir, float turn_ahead,
+                                          bool sign_at_end) {
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
   std::vector<glm::quat> at(J);
@@ -720,9 +793,19 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::qu
     ArmTarget t;
     const float arm_bow_m = glm::length(wrist_to - wrist_from) > kHandPathWideBowFrom_m ? bow_m : kHandPathForwardBow_m;
     t.point = frame_at.to_flat(wrist_from + s * (wrist_to - wrist_from) +
-                               arm_bow_m * std::sin(3.14159265f * s) * rig.forward);
+                               arm_bow_m * std::sin(3.14159265f * s) * rig.forward +
+                               apart_m * hands_apart_share(s) * apart_dir[side_index]);
     t.contact_offset = glm::vec3(0.0f);
     t.hand_delta = glm::conjugate(frame_at.rotation) * pa.delta(a.hand);
+    if (apart_m > 0.0f) {
+      // Hands kept apart close in along the line between them; turned towards their orientation
+      // at the sign ahead of the way (turn_ahead), so the last quarter mostly closes the gap:
+      // turning while closing, the hand-written C pair of SynthesisTransition.HandsThatTouch...
+      // stayed 5.5 mm deep with the wrists apart (6.8 before).
+      const PoseBuilder& sign = sign_at_end ? pt : pf;
+      const float w = std::min(1.0f, turn_ahead * (sign_at_end ? s : 1.0f - s));
+      t.hand_delta = glm::conjugate(frame_at.rotation) * slerp_shortest(pa.delta(a.hand), sign.delta(a.hand), w);
+    }
     t.auto_swivel = false;
     const float swivel_from = pose_swivel(rig, side, pf, frame_from.rotation);
     float turn = pose_swivel(rig, side, pt, frame_to.rotation) - swivel_from;  // the shorter way round
@@ -1013,7 +1096,8 @@ class DirectPathLength {
 // stand, so the collision remedies are unchanged wherever the hand's path is not clear.
 bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                           std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, float bow_m,
-                          bool search_swivel, bool allow_longer, TransitionPlan* out, bool* deeper,
+                          bool search_swivel, float apart_m, float turn_ahead, bool allow_longer, TransitionPlan* out,
+                          bool* deeper,
                           float added_m = 0.0005f) {
   *deeper = false;
   const Rig& rig = ctx.rig;
@@ -1027,11 +1111,13 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   pt.set_from_local(to);
   const ThoraxFrame frame_from = thorax_frame(ctx, pf, from, to, from);
   const ThoraxFrame frame_to = thorax_frame(ctx, pt, from, to, to);
+  const std::array<glm::vec3, 2> apart_dir =
+      apart_m > 0.0f ? hands_apart_dirs(rig, rest_at_start ? pt : pf) : std::array<glm::vec3, 2>{};
   for (int i = 0; i < kHandPathWaypoints; ++i) {
     const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
     fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
     waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0, bow_m, search_swivel,
-                                      frame_from, frame_to);
+                                      frame_from, frame_to, apart_m, apart_dir, turn_ahead, rest_at_start);
   }
   const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
@@ -1169,6 +1255,16 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   return true;
 }
 
+// How many of kHandPathTries a rest transition tries: the hands-apart ones only where the hands
+// meet at the sign (hands_meet_at_sign). Asked only once the plain tries are used up (two poses).
+int hand_path_try_count(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start) {
+  constexpr int kAll = static_cast<int>(sizeof kHandPathTries / sizeof kHandPathTries[0]);
+  PoseBuilder pf(ctx.rig), pt(ctx.rig);
+  pf.set_from_local(from);
+  pt.set_from_local(to);
+  return hands_meet_at_sign(ctx.rig, pf, pt, rest_at_start) ? kAll : kHandPathPlainTries;
+}
+
 // BOWS_COMMENT
 // The hand's path of a rest transition (plan_hand_path_bowed) through kHandPathTries in order,
 // from `*next_try`: the first that adds no depth beyond the end poses is taken when it takes fewer
@@ -1182,12 +1278,19 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
 bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                     std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, bool retry,
                     int* next_try, TransitionPlan* out) {
-  constexpr int kTries = static_cast<int>(sizeof kHandPathTries / sizeof kHandPathTries[0]);
-  for (; *next_try < kTries; ++*next_try) {
+  int tries = kHandPathPlainTries;
+  bool counted = false;
+  for (;; ++*next_try) {
+    if (*next_try >= tries) {
+      if (counted) break;
+      counted = true;
+      tries = hand_path_try_count(ctx, from, to, rest_at_start);
+      if (*next_try >= tries) break;
+    }
     const HandPathTry& attempt = kHandPathTries[*next_try];
     bool deeper = false;
     if (plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
-                             attempt.search_swivel, retry, out, &deeper))
+                             attempt.search_swivel, attempt.apart_m, attempt.turn_ahead, retry, out, &deeper))
       return true;
     // Not shorter than the direct path: the later tries, bowed further, are longer still.
     if (!deeper) return false;
@@ -1215,12 +1318,14 @@ bool plan_hand_path_least_deep(const SynthContext& ctx, const glm::quat* from, c
   const float hand_floor_m = std::max(ends_from.hand_m, ends_to.hand_m);
   const float arm_floor_m = std::max(ends_from.arm_m, ends_to.arm_m);
   bool found = false;
-  for (const HandPathTry& attempt : kHandPathTries) {
+  const int tries = hand_path_try_count(ctx, from, to, rest_at_start);
+  for (int n = 0; n < tries; ++n) {
+    const HandPathTry& attempt = kHandPathTries[n];
     if (within_m <= 0.0f) break;
     TransitionPlan p;
     bool deeper = false;
     if (!plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
-                              attempt.search_swivel, true, &p, &deeper, within_m))
+                              attempt.search_swivel, attempt.apart_m, attempt.turn_ahead, true, &p, &deeper, within_m))
       continue;
     const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
     const float excess = excess_over(d, hand_floor_m, arm_floor_m);
