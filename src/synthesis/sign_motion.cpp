@@ -1141,11 +1141,16 @@ bool meet_where_both_hands_hold(Solver& solver, const HandPlan& plan, const Hand
   return true;
 }
 
-// Whether a hand's movements take it to a place on the other hand or arm.
+// Whether a step's movements, or any of a hand's, take it to a place on the other hand or arm.
+bool moves_to_the_other_hand_in(const std::vector<Movement>& step) {
+  for (const Movement& m : step)
+    if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) return true;
+  return false;
+}
+
 bool moves_to_the_other_hand(const HandPlan& plan) {
   for (const auto& step : plan.steps)
-    for (const auto& m : step)
-      if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) return true;
+    if (moves_to_the_other_hand_in(step)) return true;
   return false;
 }
 
@@ -1159,12 +1164,6 @@ bool moves_to_the_other_hand(const HandPlan& plan) {
 void keep_pair_contact_on_the_dominant_hand(std::vector<Movement>* copied) {
   for (Movement& m : *copied)
     if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) m.to_location.reset();
-}
-
-bool moves_to_the_other_hand_in(const std::vector<Movement>& step) {
-  for (const Movement& m : step)
-    if (m.to_location && m.to_location->kind == Location::Kind::OtherHand) return true;
-  return false;
 }
 
 // A symmetric pair with the dominant hand on the other (keep_pair_contact_on_the_dominant_hand)
@@ -1302,12 +1301,8 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   }
   // Hands in contact with each other (placed on, or moving to, the other): neither counts as
   // penetrating the other.
-  bool to_other = false;
-  for (const auto& p : plans)
-    for (const auto& step : p.steps)
-      for (const auto& m : step)
-        to_other = to_other || (m.to_location && m.to_location->kind == Location::Kind::OtherHand);
-  if (plans[0].on_other_hand || plans[1].on_other_hand || to_other)
+  if (plans[0].on_other_hand || plans[1].on_other_hand || moves_to_the_other_hand(plans[0]) ||
+      moves_to_the_other_hand(plans[1]))
     plans[0].exempt_hand = plans[1].exempt_hand = true;
   return plans;
 }
