@@ -1148,6 +1148,11 @@ bool moves_to_the_other_hand_in(const std::vector<Movement>& step) {
   return false;
 }
 
+// Whether a movement ends on the other hand (its target place is there).
+bool ends_on_the_other_hand(const Movement& m) {
+  return m.to_location && m.to_location->kind == Location::Kind::OtherHand;
+}
+
 bool moves_to_the_other_hand(const HandPlan& plan) {
   for (const auto& step : plan.steps)
     if (moves_to_the_other_hand_in(step)) return true;
@@ -1935,14 +1940,27 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
           const glm::vec3 outward = relocated[i] ? glm::vec3(0.0f) : touch_outward[i];
           for (const auto& m : ms[i]) {
             float ps = path_s;
+            // A path that ends on the other hand (hammovel hampalm hamtouch: left, onto the
+            // other palm) has its end in the goal state already (that place, other_hand_point):
+            // the direction is the way there and its size the distance, not a further move. Its
+            // whole offset on top of the goal took the index 11-12 cm past the palm (a straight
+            // move's size, movement_size_m). The path keeps its shape (an arc's bulge, a wave)
+            // less the chord, so it starts at the start and ends on the place.
+            // (A hand already on the other hand keeps its path: its goal is its own place there.)
+            const bool lands = ends_on_the_other_hand(m) && !plans[i].on_other_hand && plans[1 - i].active &&
+                               !plans[1 - i].on_other_hand;
+            auto offset = [&](float at) {
+              glm::vec3 o = movement_offset(rig, m, plans[i].move_mirror, at, reference, outward);
+              if (lands) o -= at * movement_offset(rig, m, plans[i].move_mirror, 1.0f, reference, outward);
+              return o;
+            };
             if (alt && movement_is_cyclic(m)) {
               float shifted = std::fmod(ps + 0.5f, 1.0f);
-              h.target += movement_offset(rig, m, plans[i].move_mirror, shifted, reference, outward) -
-                          movement_offset(rig, m, plans[i].move_mirror, 0.5f, reference, outward);
+              h.target += offset(shifted) - offset(0.5f);
             } else if (alt) {
-              h.target -= movement_offset(rig, m, plans[i].move_mirror, ps, reference, outward);
+              h.target -= offset(ps);
             } else {
-              h.target += movement_offset(rig, m, plans[i].move_mirror, ps, reference, outward);
+              h.target += offset(ps);
             }
             // A wrist movement (nod, swing, twist, circle) turns the hand at the wrist: the
             // wrist stays where it is. Turning it about the contact part instead (the target is
