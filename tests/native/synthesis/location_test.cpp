@@ -240,9 +240,10 @@ TEST(SynthesisLocation, ABracketedContactPartReachesTheEarlobeFromHamNoSys) {
 // make_plans dropped such a target (its workaround for the reader's brackets, now read as
 // contact parts); kept, the hand went for the resting hand by the hip, the arm through the torso
 // (the corpus's zastrzyk 59 mm, dyzurny 54). The other hand is brought up as the place, as for a
-// sign placed on it from the start, and no arm goes into the body. (How near the index comes to
-// the palm is the synthesis' move to the other hand, 4-5 cm here and 10-11 cm with the other hand
-// written: not this test's concern.)
+// sign placed on it from the start, and no arm goes into the body. The index lands on the palm
+// (within 1 cm), with the other hand left to the synthesis and written: the straight move's
+// offset was added on top of its goal, which is that place already, and took the index 105-117
+// mm past it on both rigs (sign_motion.cpp, a path that ends on the other hand).
 TEST(SynthesisLocation, AOneHandedSignMovingToTheOtherHandBringsThatHandUp) {
   // The same movement with the other hand left to the synthesis and with it written (flat,
   // fingers forward-right, palm up).
