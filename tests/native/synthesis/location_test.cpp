@@ -294,6 +294,56 @@ TEST(SynthesisLocation, AOneHandedSignMovingToTheOtherHandBringsThatHandUp) {
   }
 }
 
+// A one-handed sign on the other ARM (the corpus's INJECTION1A: into the crook of the elbow;
+// T-SHIRT1: the flat hand in to the upper arm). The other hand was brought up as for a place on
+// the hand, held in front of the chest with its elbow and upper arm hanging beside the torso, so
+// the reaching arm went through the chest to them (INJECTION1A 64 mm, T-SHIRT1 127 mm on the
+// project avatar). That arm is presented, held out in front (hamarmextended): the reaching hand
+// gets to its place on it and no arm is in the body.
+TEST(SynthesisLocation, AOneHandedSignOnTheOtherArmPresentsThatArm) {
+  struct Case {
+    const char* names;
+    notation::HandPlace place;  // on the other arm
+    notation::HandPlace part;   // of the reaching hand
+    int finger;
+  };
+  const Case cases[] = {
+      {"hamfinger2,hamextfingerdl,hampalmd,hammovedl,hamelbowinside,hamtouch", notation::HandPlace::ElbowInside,
+       notation::HandPlace::Fingertip, 1},
+      {"hamfinger2,hamextfingerl,hampalmd,hammovel,hamelbow,hamtouch", notation::HandPlace::Elbow,
+       notation::HandPlace::Fingertip, 1},
+  };
+  for (const Case& c : cases) {
+    const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(c.names);
+    ASSERT_EQ(read.size(), 1u);
+    ASSERT_TRUE(read[0].ok() && read[0].spec) << c.names;
+    const notation::SignSpec& s = *read[0].spec;
+    ASSERT_FALSE(s.nondominant.has_value());
+    for (int variant = 0; variant < 2; ++variant) {
+      avatar::Avatar av = variant == 0 ? make_reference_humanoid() : make_rotated_variant(0.9f);
+      Rig rig;
+      std::string error;
+      ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+      SynthesisResult r = synthesize_sign(s, av);
+      ASSERT_TRUE(r.ok()) << r.errors[0].message;
+      int last = 0;
+      for (const ClipSegment& seg : r.clip.segments)
+        if (seg.kind == ClipSegment::Kind::Sign) last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+      last = std::min(last, r.clip.frame_count - 1);
+      const PoseBuilder end = frame_pose(rig, r.clip, last);
+      PartPoint place;
+      if (!anchor_point(av, end, hand_part_anchor_name(kLeft, c.place, 1), &place))
+        place = hand_part(end, kLeft, c.place, 1);
+      const float gap_m = glm::length(hand_part(end, kRight, c.part, c.finger).point - place.point);
+      const std::string what = std::string(c.names) + ", variant " + std::to_string(variant);
+      std::printf("%s: %.1f mm from the place, deepest %.1f mm\n", what.c_str(), gap_m * 1000.0f,
+                  r.report.max_penetration_m * 1000.0f);
+      EXPECT_LT(gap_m, 0.01f) << what << ": the hand does not reach its place on the other arm";
+      EXPECT_LE(r.report.max_penetration_m, 0.005f) << what;
+    }
+  }
+}
+
 // A symmetric sign whose hands are each written on the other, with no location symbol
 // (HamNoSys: made in neutral space, the hands touching each other there; the corpus's
 // RUBBING-ONES-HANDS-TOGETHER, FRESH, SHIP): the notation gives the non-dominant hand the
