@@ -361,10 +361,12 @@ struct Solver {
     return other_hand_place(pose, plan.side, plan.place, plan.place_finger);
   }
   // The place `place` (finger `finger`) on the hand or arm other than `side`'s, as posed.
-  PartPoint other_hand_place(const PoseBuilder& pose, Side side, HandPlace place, int finger) const {
+  PartPoint other_hand_place(const PoseBuilder& pose, Side side, HandPlace place,
+                             int finger) const {
     Side o = other(side);
     PartPoint p;
-    if (!anchor_point(*ctx.avatar, pose, hand_part_anchor_name(o, place, finger), &p)) p = hand_part(pose, o, place, finger);
+    if (!anchor_point(*ctx.avatar, pose, hand_part_anchor_name(o, place, finger), &p))
+      p = hand_part(pose, o, place, finger);
     return p;
   }
 
@@ -1333,7 +1335,8 @@ bool presents_the_arm(const HandPlan& plan) {
   if (plan.on_other_hand && !hand_borne_place(plan.place)) return true;
   for (const auto& step : plan.steps)
     for (const Movement& m : step)
-      if (m.to_location && m.to_location->kind == Location::Kind::OtherHand && !hand_borne_place(m.to_location->hand_place))
+      if (m.to_location && m.to_location->kind == Location::Kind::OtherHand &&
+          !hand_borne_place(m.to_location->hand_place))
         return true;
   return false;
 }
@@ -1569,7 +1572,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // Solve order: a hand that is the place of the other goes first.
   std::array<int, 2> order = {0, 1};
   // So does the other arm of a hand that moves to a place on it (arm_place, below).
-  if (plans[0].on_other_hand || (presents_the_arm(plans[0]) && plans[1].active && !plans[1].on_other_hand))
+  if (plans[0].on_other_hand ||
+      (presents_the_arm(plans[0]) && plans[1].active && !plans[1].on_other_hand))
     order = {1, 0};
 
   // Key states.
@@ -1885,7 +1889,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
                 g.target = other_hand_point(solver, plans[i], op, key[1 - i], to.hand_place,
                                             to.finger >= 0 ? to.finger : 1, contact_distance(to.contact, true));
                 if (!hand_borne_place(to.hand_place)) {
-                  arm_place[i] = {to.hand_place, to.finger >= 0 ? to.finger : 1, contact_distance(to.contact, true), g.target};
+                  arm_place[i] = {to.hand_place, to.finger >= 0 ? to.finger : 1,
+                                  contact_distance(to.contact, true), g.target};
                   g.on_arm_place = 1.0f;
                 }
                 ArmTarget t;
@@ -1990,11 +1995,12 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
             // move's size, movement_size_m). The path keeps its shape (an arc's bulge, a wave)
             // less the chord, so it starts at the start and ends on the place.
             // (A hand already on the other hand keeps its path: its goal is its own place there.)
-            const bool lands = ends_on_the_other_hand(m) && !plans[i].on_other_hand && plans[1 - i].active &&
-                               !plans[1 - i].on_other_hand;
+            const bool lands = ends_on_the_other_hand(m) && !plans[i].on_other_hand &&
+                               plans[1 - i].active && !plans[1 - i].on_other_hand;
             auto offset = [&](float at) {
               glm::vec3 o = movement_offset(rig, m, plans[i].move_mirror, at, reference, outward);
-              if (lands) o -= at * movement_offset(rig, m, plans[i].move_mirror, 1.0f, reference, outward);
+              if (lands)
+                o -= at * movement_offset(rig, m, plans[i].move_mirror, 1.0f, reference, outward);
               return o;
             };
             if (alt && movement_is_cyclic(m)) {
@@ -2272,7 +2278,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
           // the other's forearm, the corpus's zapomnieć: 21 -> 92 mm when it read the unposed arm.)
           const ArmPlace& a = arm_place[i];
           const PartPoint place = solver.other_hand_place(pb, plan.side, a.place, a.finger);
-          t.point += h.on_arm_place * (place.point + a.distance_m * glm::normalize(place.normal) - a.at_key);
+          t.point += h.on_arm_place *
+                     (place.point + a.distance_m * glm::normalize(place.normal) - a.at_key);
         }
         // The contact point stops at the body (stops_at_body, above), the line from the key pose's.
         if (stops_at_body[i] && f > 0)

@@ -249,7 +249,8 @@ TEST(SynthesisLocation, AOneHandedSignMovingToTheOtherHandBringsThatHandUp) {
   // fingers forward-right, palm up).
   const char* const signs[] = {
       "hamfinger2,hamextfingerl,hampalmd,hamchest,hamclose,hammovel,hampalm,hamtouch",
-      "hamparbegin,hamfinger2,hamextfingerl,hampalmd,hamplus,hamflathand,hamextfingeror,hampalmu,hamparend,"
+      "hamparbegin,hamfinger2,hamextfingerl,hampalmd,hamplus,hamflathand,hamextfingeror,hampalmu,"
+      "hamparend,"
       "hamchest,hamclose,hammovel,hampalm,hamtouch"};
   for (const char* names : signs) {
     const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(names);
@@ -269,7 +270,8 @@ TEST(SynthesisLocation, AOneHandedSignMovingToTheOtherHandBringsThatHandUp) {
       // frame).
       int last = 0;
       for (const ClipSegment& seg : r.clip.segments)
-        if (seg.kind == ClipSegment::Kind::Sign) last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+        if (seg.kind == ClipSegment::Kind::Sign)
+          last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
       last = std::min(last, r.clip.frame_count - 1);
       const int left_hand = rig.arms[kLeft].hand;
       const glm::vec3 at_rest = frame_pose(rig, r.clip, 0).position(left_hand);
@@ -280,11 +282,13 @@ TEST(SynthesisLocation, AOneHandedSignMovingToTheOtherHandBringsThatHandUp) {
       PartPoint palm;
       if (!anchor_point(av, end, hand_part_anchor_name(kLeft, notation::HandPlace::Palm, 1), &palm))
         palm = hand_part(end, kLeft, notation::HandPlace::Palm, 1);
-      const float gap_m = glm::length(hand_part(end, kRight, notation::HandPlace::Fingertip, 1).point - palm.point);
-      const std::string what = std::string(s.nondominant ? "written other hand" : "one hand") + ", variant " +
-                               std::to_string(variant);
-      std::printf("%s: the other hand raised %.0f mm, the index %.1f mm from the palm, deepest %.1f mm\n",
-                  what.c_str(), raised_m * 1000.0f, gap_m * 1000.0f, r.report.max_penetration_m * 1000.0f);
+      const float gap_m =
+          glm::length(hand_part(end, kRight, notation::HandPlace::Fingertip, 1).point - palm.point);
+      const std::string what = std::string(s.nondominant ? "written other hand" : "one hand") +
+                               ", variant " + std::to_string(variant);
+      std::printf(
+          "%s: the other hand raised %.0f mm, the index %.1f mm from the palm, deepest %.1f mm\n",
+          what.c_str(), raised_m * 1000.0f, gap_m * 1000.0f, r.report.max_penetration_m * 1000.0f);
       if (!s.nondominant) {
         EXPECT_GT(raised_m, 0.15f) << what << ": the other hand was left hanging";
       }
@@ -308,8 +312,8 @@ TEST(SynthesisLocation, AOneHandedSignOnTheOtherArmPresentsThatArm) {
     int finger;
   };
   const Case cases[] = {
-      {"hamfinger2,hamextfingerdl,hampalmd,hammovedl,hamelbowinside,hamtouch", notation::HandPlace::ElbowInside,
-       notation::HandPlace::Fingertip, 1},
+      {"hamfinger2,hamextfingerdl,hampalmd,hammovedl,hamelbowinside,hamtouch",
+       notation::HandPlace::ElbowInside, notation::HandPlace::Fingertip, 1},
       {"hamfinger2,hamextfingerl,hampalmd,hammovel,hamelbow,hamtouch", notation::HandPlace::Elbow,
        notation::HandPlace::Fingertip, 1},
   };
@@ -328,7 +332,8 @@ TEST(SynthesisLocation, AOneHandedSignOnTheOtherArmPresentsThatArm) {
       ASSERT_TRUE(r.ok()) << r.errors[0].message;
       int last = 0;
       for (const ClipSegment& seg : r.clip.segments)
-        if (seg.kind == ClipSegment::Kind::Sign) last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+        if (seg.kind == ClipSegment::Kind::Sign)
+          last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
       last = std::min(last, r.clip.frame_count - 1);
       const PoseBuilder end = frame_pose(rig, r.clip, last);
       PartPoint place;
