@@ -106,6 +106,10 @@ struct HandState {
   // The wrist movement's part of delta, right-multiplied onto the held orientation
   // (ArmTarget::wrist_motion; identity: none).
   glm::quat wrist_turn{1, 0, 0, 0};
+  // How far the hand is on its way to a place on the other ARM (0: not, 1: there). That place
+  // moves with the other arm's swivel, which the frames may still clear out of the body: the
+  // hand follows the place's move by this share (sign_motion's frames, `arm_place`).
+  float on_arm_place = 0.0f;
 };
 
 // The arm target that holds a hand state as it is: its contact offset, orientation and swivel
@@ -159,6 +163,7 @@ HandState mix_state(const HandState& a, const HandState& b, float s) {
   o.angles = mix(a.angles, b.angles, s);
   o.offset = a.offset + s * (b.offset - a.offset);
   o.swivel = a.swivel + s * (b.swivel - a.swivel);
+  o.on_arm_place = a.on_arm_place + s * (b.on_arm_place - a.on_arm_place);
   return o;
 }
 
@@ -353,10 +358,15 @@ struct Solver {
   }
 
   PartPoint other_hand_place(const PoseBuilder& pose, const HandPlan& plan) const {
-    Side o = other(plan.side);
+    return other_hand_place(pose, plan.side, plan.place, plan.place_finger);
+  }
+  // The place `place` (finger `finger`) on the hand or arm other than `side`'s, as posed.
+  PartPoint other_hand_place(const PoseBuilder& pose, Side side, HandPlace place,
+                             int finger) const {
+    Side o = other(side);
     PartPoint p;
-    if (!anchor_point(*ctx.avatar, pose, hand_part_anchor_name(o, plan.place, plan.place_finger), &p))
-      p = hand_part(pose, o, plan.place, plan.place_finger);
+    if (!anchor_point(*ctx.avatar, pose, hand_part_anchor_name(o, place, finger), &p))
+      p = hand_part(pose, o, place, finger);
     return p;
   }
 
@@ -1148,6 +1158,11 @@ bool moves_to_the_other_hand_in(const std::vector<Movement>& step) {
   return false;
 }
 
+// Whether a movement ends on the other hand (its target place is there).
+bool ends_on_the_other_hand(const Movement& m) {
+  return m.to_location && m.to_location->kind == Location::Kind::OtherHand;
+}
+
 bool moves_to_the_other_hand(const HandPlan& plan) {
   for (const auto& step : plan.steps)
     if (moves_to_the_other_hand_in(step)) return true;
@@ -1313,6 +1328,17 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
 bool hand_borne_place(HandPlace p) {
   return p != HandPlace::Forearm && p != HandPlace::ForearmBack && p != HandPlace::Elbow &&
          p != HandPlace::ElbowInside && p != HandPlace::UpperArm;
+}
+
+// Whether a hand is placed on, or moves to, a place on the other ARM (not borne by the hand).
+bool presents_the_arm(const HandPlan& plan) {
+  if (plan.on_other_hand && !hand_borne_place(plan.place)) return true;
+  for (const auto& step : plan.steps)
+    for (const Movement& m : step)
+      if (m.to_location && m.to_location->kind == Location::Kind::OtherHand &&
+          !hand_borne_place(m.to_location->hand_place))
+        return true;
+  return false;
 }
 
 // A two-handed sign whose hands are each written on the other (a symmetric sign with a hand
@@ -1522,6 +1548,11 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     plans[1].spec.orientation.palm = {0, 1, 0};
     plans[1].spec.location.kind = Location::Kind::NeutralSpace;
     plans[1].spec.location.side = notation::Side::Left;
+    // A place on the arm (the crook of the elbow, the upper arm): held with the hand in front of
+    // the chest, that arm's elbow and upper arm hang beside the torso, and the reaching arm went
+    // through the chest to them (the corpus's INJECTION1A 64 mm, T-SHIRT1 127 mm). A signer
+    // presents the arm, held out in front (HamNoSys's hamarmextended).
+    if (presents_the_arm(plans[0])) plans[1].spec.location.contact = notation::Contact::ArmExtended;
     plans[1].mirror_x = ctx.options.left_handed;
     plans[1].steps.assign(plans[0].steps.size(), {});
   }
@@ -1540,7 +1571,10 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   const std::vector<ThoraxTurn> body_turns = far_side_turns(ctx, plans);
   // Solve order: a hand that is the place of the other goes first.
   std::array<int, 2> order = {0, 1};
-  if (plans[0].on_other_hand) order = {1, 0};
+  // So does the other arm of a hand that moves to a place on it (arm_place, below).
+  if (plans[0].on_other_hand ||
+      (presents_the_arm(plans[0]) && plans[1].active && !plans[1].on_other_hand))
+    order = {1, 0};
 
   // Key states.
   std::array<HandState, 2> key;
@@ -1548,6 +1582,19 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // its per-frame target is its wrist, this far from the contact target of the key pose, so a
   // movement moves the hand and not the elbow.
   std::array<bool, 2> wrist_led = {false, false};
+  // A hand that moves to a place on the other ARM (INJECTION1A: into the crook of the elbow): its
+  // goal is that place where the other arm holds its key pose (other_hand_point), but the frames
+  // still clear that arm out of the trunk by turning its swivel (the presented arm 0.1 rad on both
+  // test rigs), which carries the elbow and the upper arm 14-20 mm away from where the goal was
+  // taken. The place, its distance and where it was at the key pose, per hand; the frames move
+  // the hand with the place by HandState::on_arm_place.
+  struct ArmPlace {
+    HandPlace place = HandPlace::Palm;
+    int finger = 1;
+    float distance_m = 0.0f;
+    glm::vec3 at_key{0.0f};
+  };
+  std::array<ArmPlace, 2> arm_place;
   std::array<glm::vec3, 2> wrist_from_contact = {glm::vec3(0.0f), glm::vec3(0.0f)};
   size_t before = errors->size();
   for (int i = 0; i < 2; ++i) {
@@ -1841,6 +1888,11 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
                 const Location& to = *m.to_location;
                 g.target = other_hand_point(solver, plans[i], op, key[1 - i], to.hand_place,
                                             to.finger >= 0 ? to.finger : 1, contact_distance(to.contact, true));
+                if (!hand_borne_place(to.hand_place)) {
+                  arm_place[i] = {to.hand_place, to.finger >= 0 ? to.finger : 1,
+                                  contact_distance(to.contact, true), g.target};
+                  g.on_arm_place = 1.0f;
+                }
                 ArmTarget t;
                 t.point = g.target;
                 t.contact_offset = g.offset;
@@ -1885,6 +1937,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
               goal[i].offset = g.offset;
               goal[i].target = g.target;
               goal[i].swivel = g.swivel;
+              if (m.to_location) goal[i].on_arm_place = g.on_arm_place;
             }
           }
         }
@@ -1935,14 +1988,28 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
           const glm::vec3 outward = relocated[i] ? glm::vec3(0.0f) : touch_outward[i];
           for (const auto& m : ms[i]) {
             float ps = path_s;
+            // A path that ends on the other hand (hammovel hampalm hamtouch: left, onto the
+            // other palm) has its end in the goal state already (that place, other_hand_point):
+            // the direction is the way there and its size the distance, not a further move. Its
+            // whole offset on top of the goal took the index 11-12 cm past the palm (a straight
+            // move's size, movement_size_m). The path keeps its shape (an arc's bulge, a wave)
+            // less the chord, so it starts at the start and ends on the place.
+            // (A hand already on the other hand keeps its path: its goal is its own place there.)
+            const bool lands = ends_on_the_other_hand(m) && !plans[i].on_other_hand &&
+                               plans[1 - i].active && !plans[1 - i].on_other_hand;
+            auto offset = [&](float at) {
+              glm::vec3 o = movement_offset(rig, m, plans[i].move_mirror, at, reference, outward);
+              if (lands)
+                o -= at * movement_offset(rig, m, plans[i].move_mirror, 1.0f, reference, outward);
+              return o;
+            };
             if (alt && movement_is_cyclic(m)) {
               float shifted = std::fmod(ps + 0.5f, 1.0f);
-              h.target += movement_offset(rig, m, plans[i].move_mirror, shifted, reference, outward) -
-                          movement_offset(rig, m, plans[i].move_mirror, 0.5f, reference, outward);
+              h.target += offset(shifted) - offset(0.5f);
             } else if (alt) {
-              h.target -= movement_offset(rig, m, plans[i].move_mirror, ps, reference, outward);
+              h.target -= offset(ps);
             } else {
-              h.target += movement_offset(rig, m, plans[i].move_mirror, ps, reference, outward);
+              h.target += offset(ps);
             }
             // A wrist movement (nod, swing, twist, circle) turns the hand at the wrist: the
             // wrist stays where it is. Turning it about the contact part instead (the target is
@@ -2204,6 +2271,15 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         if (plan.on_other_hand) {
           PartPoint place = solver.other_hand_place(pb, plan);
           t.point = place.point + plan.place_distance_m * glm::normalize(place.normal) + h.target;
+        } else if (h.on_arm_place > 0.0f && oi == 1 && plans[1 - i].active) {
+          // On the way to a place on the other arm: that arm is solved first (order), and the
+          // hand follows where its place is now, by the share of the way it has come. (Not the
+          // hand solved first: the other arm is not posed yet. A symmetric pair each moving to
+          // the other's forearm, the corpus's zapomnieć: 21 -> 92 mm when it read the unposed arm.)
+          const ArmPlace& a = arm_place[i];
+          const PartPoint place = solver.other_hand_place(pb, plan.side, a.place, a.finger);
+          t.point += h.on_arm_place *
+                     (place.point + a.distance_m * glm::normalize(place.normal) - a.at_key);
         }
         // The contact point stops at the body (stops_at_body, above), the line from the key pose's.
         if (stops_at_body[i] && f > 0)
