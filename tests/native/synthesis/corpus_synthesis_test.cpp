@@ -181,8 +181,10 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
 TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   const CorpusSample& s = corpus_sample();
   if (!s.skip.empty()) GTEST_SKIP() << s.skip;
-  // The sample's measured figures, every 2nd clean sign: 2,236 synthesised, 115 over 5 mm
-  // (5.1 %), deepest 129 mm. Before: 120 (5.4 %) before pair-mirror's two-handed plans
+  // The sample's measured figures, every 2nd clean sign: 2,236 synthesised, 114 over 5 mm
+  // (5.1 %), deepest 129 mm. Before: 115 (5.1 %) before trunk-depth's reading of a symmetric
+  // pair's sides (hamnosys_parser.cpp, same_side_pair, mirrored_place); 120 (5.4 %) before
+  // pair-mirror's two-handed plans
   // (sign_motion.cpp, mirror_copy_for_the_written_other_hand, ride_on_the_carrying_hand); 140
   // (6.3 %) before hands-meet (a rest transition into a sign whose hands meet holds the wrists
   // apart until the last quarter); 179 (8.0 %), deepest 133 mm, before rest-route (movements stop
