@@ -133,6 +133,7 @@ class Reader {
       i = close < end ? close + 1 : end;
     } else if (i < end && is_shape_base(s_[i].code)) {
       i = read_hand(i, end, &sign->dominant, nullptr);
+      i = read_orientation_pair(i, end, sign);
     } else {
       if (i < end) {
         error(i, "expected a handshape (hamfist, hamflathand, hamfinger2, ...) or "
@@ -318,6 +319,37 @@ class Reader {
     if (base) hand->orientation = *base;
     i = read_orientation(skip_marks(i, end), end, &hand->orientation);
     return skip_marks(i, end);
+  }
+
+  // One handshape for both hands and their orientations paired ("hamfinger2345 hamthumboutmod
+  // hamparbegin hamextfingeru hampalmdl hamplus hamextfingeru hampalmd hamparend", 147 signs of
+  // the real-sign corpus): the pair is the two hands' orientations, the non-dominant hand's
+  // starting from the dominant one as a hamplus configuration does. Read as a change of the hand
+  // after the start, it left the dominant orientation unwritten and the pair's body place after
+  // it a target of that change (PJM Peugeot: both hands at the shoulders read as the right hand
+  // moving there from neutral space, then "hammovei hamlargemod" through the shoulder).
+  // Returns the index after the pair, or i when none is there.
+  std::size_t read_orientation_pair(std::size_t i, std::size_t end, SignSpec* sign) {
+    if (!(i < end && s_[i].code == hamparbegin && match_[i] < end)) return i;
+    const std::size_t close = match_[i];
+    const std::size_t plus = find_plus(i + 1, close);
+    auto is_orientation = [&](std::size_t k) {
+      return k < close && (in_group(s_[k].code, HamGroup::ExtendedFinger) ||
+                           in_group(s_[k].code, HamGroup::Palm));
+    };
+    if (plus >= close || !is_orientation(i + 1) || !is_orientation(plus + 1)) return i;
+    std::size_t j = skip_marks(read_orientation(i + 1, plus, &sign->dominant.orientation), plus);
+    if (j < plus)
+      error(j, "expected the dominant hand's orientation or hamplus, found '" + s_[j].text + "'");
+    // What the pair does not say of the other hand (a palm written alone) is the dominant hand's,
+    // mirrored under a mirror symmetry as for a hand given only a location.
+    HandSpec nd = nondominant_copy(*sign);
+    j = skip_marks(read_orientation(plus + 1, close, &nd.orientation), close);
+    if (j < close)
+      error(j, "expected the non-dominant hand's orientation or hamparend, found '" + s_[j].text +
+                   "'");
+    sign->nondominant = nd;
+    return close + 1;
   }
 
   std::size_t read_orientation(std::size_t i, std::size_t end, Orientation* o) {
