@@ -133,6 +133,7 @@ class Reader {
       i = close < end ? close + 1 : end;
     } else if (i < end && is_shape_base(s_[i].code)) {
       i = read_hand(i, end, &sign->dominant, nullptr);
+      i = read_orientation_pair(i, end, sign);
     } else {
       if (i < end) {
         error(i, "expected a handshape (hamfist, hamflathand, hamfinger2, ...) or "
@@ -148,6 +149,13 @@ class Reader {
     initial_nondominant_ = sign->nondominant ? *sign->nondominant : sign->dominant;
     // Actions.
     read_actions(i, end, sign, &sign->movements);
+    if (own_side_dominant_) {
+      sign->dominant.location.side = mirror(sign->dominant.location.side);
+      for (MovementStep& step : sign->movements)
+        for (Movement& m : step.dominant)
+          if (m.to_location && m.to_location->kind == Location::Kind::Body)
+            m.to_location->side = mirror(m.to_location->side);
+    }
     if (alternate_all_) {
       for (MovementStep& step : sign->movements) {
         for (Movement& m : step.dominant) m.alternating = true;
@@ -311,6 +319,37 @@ class Reader {
     if (base) hand->orientation = *base;
     i = read_orientation(skip_marks(i, end), end, &hand->orientation);
     return skip_marks(i, end);
+  }
+
+  // One handshape for both hands and their orientations paired ("hamfinger2345 hamthumboutmod
+  // hamparbegin hamextfingeru hampalmdl hamplus hamextfingeru hampalmd hamparend", 147 signs of
+  // the real-sign corpus): the pair is the two hands' orientations, the non-dominant hand's
+  // starting from the dominant one as a hamplus configuration does. Read as a change of the hand
+  // after the start, it left the dominant orientation unwritten and the pair's body place after
+  // it a target of that change (PJM Peugeot: both hands at the shoulders read as the right hand
+  // moving there from neutral space, then "hammovei hamlargemod" through the shoulder).
+  // Returns the index after the pair, or i when none is there.
+  std::size_t read_orientation_pair(std::size_t i, std::size_t end, SignSpec* sign) {
+    if (!(i < end && s_[i].code == hamparbegin && match_[i] < end)) return i;
+    const std::size_t close = match_[i];
+    const std::size_t plus = find_plus(i + 1, close);
+    auto is_orientation = [&](std::size_t k) {
+      return k < close && (in_group(s_[k].code, HamGroup::ExtendedFinger) ||
+                           in_group(s_[k].code, HamGroup::Palm));
+    };
+    if (plus >= close || !is_orientation(i + 1) || !is_orientation(plus + 1)) return i;
+    std::size_t j = skip_marks(read_orientation(i + 1, plus, &sign->dominant.orientation), plus);
+    if (j < plus)
+      error(j, "expected the dominant hand's orientation or hamplus, found '" + s_[j].text + "'");
+    // What the pair does not say of the other hand (a palm written alone) is the dominant hand's,
+    // mirrored under a mirror symmetry as for a hand given only a location.
+    HandSpec nd = nondominant_copy(*sign);
+    j = skip_marks(read_orientation(plus + 1, close, &nd.orientation), close);
+    if (j < close)
+      error(j, "expected the non-dominant hand's orientation or hamparend, found '" + s_[j].text +
+                   "'");
+    sign->nondominant = nd;
+    return close + 1;
   }
 
   std::size_t read_orientation(std::size_t i, std::size_t end, Orientation* o) {
@@ -561,9 +600,52 @@ class Reader {
       i = read_constellation_place(i, end, &nd, &nd_set);
     if (nd_set) {
       if (!sign->nondominant) sign->nondominant = nondominant_copy(*sign);
+      if (same_side_pair(*sign, nd)) {
+        if (nd.side == Side::Left || nd.side == Side::LeftBeside) {
+          own_side_dominant_ = true;  // the dominant hand's sides, once its actions are read
+        } else {
+          nd.side = mirror(nd.side);
+        }
+      }
       sign->nondominant->location = nd;
+    } else if (sign->nondominant && sign->symmetry != Symmetry::None &&
+               sign->dominant.location.kind != Location::Kind::OtherHand) {
+      sign->nondominant->location = mirrored_place(sign->dominant.location);
     }
     return i;
+  }
+
+  // The other hand's place when a symmetric sign writes the two hands' configurations and one
+  // place ("hamsymmpar hamparbegin config hamplus config hamparend hamshoulders hamclose"): the
+  // dominant hand's, at the mirror side, as the planner places a hand copied under a symmetry
+  // (sign_motion.cpp make_plans: mirror_x). The non-dominant HandSpec made for the
+  // configurations kept the place it had before the location was read, neutral space: the PJM
+  // "n weeks ago" signs started the left hand there, away from its shoulder.
+  static Location mirrored_place(const Location& dominant) {
+    Location loc = dominant;
+    loc.side = mirror(loc.side);
+    return loc;
+  }
+
+  // A symmetric pair's hands are never at one place: mirrored they are at the two sides of the
+  // body, and in parallel they keep apart. A pair that writes the same side of one place for
+  // both hands writes each hand's own side: "hamparbegin hamlrat hamshoulders hamplus hamlrat
+  // hamshoulders hamparend" (the PJM "n weeks ago" signs and Peugeot, whose dominant hand then
+  // moves "hammoveil" to "hamlrat hamshouldertop") has each hand at its own shoulder, "hamshoulders
+  // hamlrat" for both (siedem tygodni temu, hamsymmpar) too. The side is the hand's own for the
+  // hand whose side it is (the non-dominant, left, hand for hamlrat before the place; the dominant,
+  // right, hand after it); the other hand's is mirrored, and when that is the dominant hand, so
+  // are the sides of the body places it moves to, written the same way (read_initial_location,
+  // the actions). Read literally, both hands started at one shoulder and the non-dominant hand,
+  // mirroring the movement, crossed the body (sześć tygodni temu 115 mm deep). A pair written
+  // with the two sides (hamchest hamlrat + hamlrat hamchest) or at a centre place is read as
+  // written.
+  static Side mirror(Side s) { return static_cast<Side>(4 - static_cast<int>(s)); }
+  static bool same_side_pair(const SignSpec& sign, const Location& nd) {
+    if (sign.symmetry == Symmetry::None) return false;
+    const Location& d = sign.dominant.location;
+    if (d.kind != Location::Kind::Body || nd.kind != Location::Kind::Body) return false;
+    return nd.side != Side::Centre && nd.side == d.side && nd.level == d.level;
   }
 
   // A hand constellation (the dominant hand's part at a place on the other hand) followed by a
@@ -895,6 +977,7 @@ class Reader {
   // stack (WASM's is small).
   static constexpr std::size_t kMaxGroupDepth = 32;
   bool too_deep_ = false;
+  bool own_side_dominant_ = false;
   bool alternate_all_ = false;
   bool reading_nondominant_ = false;  // inside the part after hamplus of an action group
   HandSpec initial_dominant_, initial_nondominant_;

@@ -1208,6 +1208,21 @@ void ride_on_the_carrying_hand(std::vector<Movement>* dominant_step) {
   }
 }
 
+// Whether a step moves the hand along a path of its own (movement_offset's kinds), not only to
+// a place or in place.
+bool has_path_movement(const std::vector<Movement>& step) {
+  for (const Movement& m : step) {
+    switch (m.kind) {
+      case MovementKind::Straight: case MovementKind::Arc: case MovementKind::Circle:
+      case MovementKind::Ellipse: case MovementKind::Wavy: case MovementKind::Zigzag:
+      case MovementKind::Spiral:
+        return true;
+      default: break;
+    }
+  }
+  return false;
+}
+
 // A symmetric sign that writes the non-dominant hand's place (HamNoSys 4: a symmetry operator
 // and a "hamparbegin place hamplus place hamparend" location; the reader gives that hand its own
 // HandSpec with the dominant orientation already mirrored, hamnosys_parser.cpp nondominant_copy)
@@ -1974,6 +1989,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         float s = minimum_jerk(static_cast<float>(f) / n);
         float path_s = seg.reversed ? 1.0f - s : s;
         FrameTarget ft;
+        std::array<glm::vec3, 2> travel = {glm::vec3(0.0f), glm::vec3(0.0f)};  // the path's offsets
         for (int i = 0; i < 2; ++i) {
           HandState h = mix_state(from[i], goal[i], s);
           const glm::vec3 state_target = h.target;  // before the path's offsets
@@ -2003,6 +2019,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
                 o -= at * movement_offset(rig, m, plans[i].move_mirror, 1.0f, reference, outward);
               return o;
             };
+            const glm::vec3 before_path = h.target;
             if (alt && movement_is_cyclic(m)) {
               float shifted = std::fmod(ps + 0.5f, 1.0f);
               h.target += offset(shifted) - offset(0.5f);
@@ -2011,6 +2028,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
             } else {
               h.target += offset(ps);
             }
+            travel[i] += h.target - before_path;
             // A wrist movement (nod, swing, twist, circle) turns the hand at the wrist: the
             // wrist stays where it is. Turning it about the contact part instead (the target is
             // where that part goes) swung the wrist around the palm (Й's twist: the wrist's
@@ -2050,6 +2068,19 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
                          wrist_from_contact[i];
           }
           ft.hand[i] = h;
+        }
+        // A hand placed on the other hand that makes a path of its own while the other hand makes
+        // one too (a symmetric pair on each other: AUGUST5's "hampalm hamclose hamcircleu", the
+        // palms circling against each other) goes its own path in space. Its target is an offset
+        // from the other hand's place as posed at each frame, which already carries the other
+        // hand's path; the two added sent the right hand round about twice as far in and out,
+        // through the chest (AUGUST5 55 mm deep with its orientation pair read; strzelać 14 mm,
+        // przerwa 8.5 mm). A hand with no path of its own rides the other
+        // (ride_on_the_carrying_hand).
+        for (int i = 0; i < 2; ++i) {
+          const int j = 1 - i;
+          if (!plans[i].on_other_hand || !plans[j].active || plans[j].on_other_hand) continue;
+          if (has_path_movement(ms[i]) && has_path_movement(ms[j])) ft.hand[i].target -= travel[j];
         }
         frames.push_back(ft);
         last = ft.hand;

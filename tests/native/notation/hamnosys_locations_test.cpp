@@ -126,6 +126,36 @@ TEST(HamNoSysLocations, ASymmetricPairOnEachOtherMovesBothHands) {
   expect_round_trip(s, false);
 }
 
+// One handshape for both hands and their orientations paired after it (147 signs of the
+// real-sign corpus, PJM Peugeot: "hamfinger2345 hamthumboutmod hamparbegin hamextfingeru hampalmdl
+// hamplus hamextfingeru hampalmd hamparend"): the two hands' configurations. It was read as a
+// change of the hand after the start (a warning), the dominant orientation left unwritten and the
+// places after it read as the target of that change, the hands starting in neutral space.
+TEST(HamNoSysLocations, OneHandshapeWithPairedOrientationsConfiguresBothHands) {
+  const std::vector<SignParse> v = parse_hamnosys_text(
+      "hamsymmlr,hamfinger2345,hamthumboutmod,hamparbegin,hamextfingeru,hampalmdl,hamplus,"
+      "hamextfingeru,hampalmd,hamparend,hamparbegin,hamshoulders,hamlrat,hamplus,hamlrat,"
+      "hamshoulders,"
+      "hamparend,hammovei");
+  ASSERT_EQ(v.size(), 1u);
+  ASSERT_TRUE(v[0].ok() && v[0].spec);
+  EXPECT_TRUE(v[0].diagnostics.empty()) << format_diagnostic(v[0].diagnostics[0]);
+  const SignSpec& s = *v[0].spec;
+  EXPECT_EQ(s.dominant.orientation.extended_finger, (Direction{0, 1, 0}));
+  EXPECT_EQ(s.dominant.orientation.palm, (Direction{1, -1, 0}));
+  ASSERT_TRUE(s.nondominant.has_value());
+  EXPECT_EQ(s.nondominant->shape.hamnosys_base, s.dominant.shape.hamnosys_base);
+  EXPECT_EQ(s.nondominant->orientation.extended_finger, (Direction{0, 1, 0}));
+  EXPECT_EQ(s.nondominant->orientation.palm, (Direction{0, -1, 0}));
+  EXPECT_EQ(s.dominant.location.level, BodyLevel::Shoulders);
+  EXPECT_EQ(s.dominant.location.side, Side::Right);
+  EXPECT_EQ(s.nondominant->location.level, BodyLevel::Shoulders);
+  EXPECT_EQ(s.nondominant->location.side, Side::Left);
+  ASSERT_EQ(s.movements.size(), 1u);
+  EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Straight);
+  expect_round_trip(s);
+}
+
 // Without a symmetry operator the other hand given as the place stays still: the dominant
 // index tip on the other palm, the non-dominant hand configured with hamplus.
 TEST(HamNoSysLocations, WithoutSymmetryTheOtherHandIsAStillPlace) {

@@ -653,5 +653,74 @@ TEST(SynthesisLocation, AvatarWithoutArmsIsAnErrorValue) {
   EXPECT_FALSE(synthesize_sign(notation::SignSpec{}, empty).ok());
 }
 
+// Each hand of a symmetric sign's pair at its own side (hamnosys_parser.cpp read_initial_location):
+// at the key pose the right wrist is 5 cm or more to the signer's right of the body's middle and
+// the left one as far to the left.
+// `as_meant`: the same sign written with each hand's place spelled out; the sign is no deeper
+// than it (+ 1 mm).
+void expect_each_hand_on_its_own_side(const char* hamnosys_names, const char* as_meant) {
+  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(hamnosys_names);
+  ASSERT_EQ(read.size(), 1u);
+  ASSERT_TRUE(read[0].ok() && read[0].spec);
+  std::string error;
+  const NamedRigs rigs = reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  for (const auto& [name, av] : rigs) {
+    Rig rig;
+    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+    const SynthesisResult r = synthesize_sign(*read[0].spec, av);
+    ASSERT_TRUE(r.ok()) << name << ": " << r.errors[0].message;
+    const glm::vec3 middle = rig.bind_pos[rig.neck];
+    const PoseBuilder key = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+    const float right_m = glm::dot(key.position(rig.arms[kRight].hand) - middle, rig.left);
+    const float left_m = glm::dot(key.position(rig.arms[kLeft].hand) - middle, rig.left);
+    EXPECT_LT(right_m, -0.05f) << name << ": the right wrist " << right_m * 1000.0f
+                               << " mm to the left";
+    EXPECT_GT(left_m, 0.05f) << name << ": the left wrist " << left_m * 1000.0f
+                             << " mm to the left";
+    const std::vector<notation::SignParse> meant = notation::parse_hamnosys_text(as_meant);
+    ASSERT_TRUE(meant.size() == 1u && meant[0].ok() && meant[0].spec);
+    const float meant_m = synthesize_sign(*meant[0].spec, av).report.max_penetration_m;
+    EXPECT_LE(r.report.max_penetration_m, meant_m + 0.001f)
+        << name << ": " << r.report.max_penetration_m * 1000.0f << " mm, as meant "
+        << meant_m * 1000.0f << " mm";
+  }
+}
+
+// A mirror-symmetric pair written at the same side of one place for both hands (the PJM "n weeks
+// ago" signs: "hamparbegin hamlrat hamshoulders hamplus hamlrat hamshoulders hamparend", then
+// "hammoveil ... hamlrat hamshouldertop"): the hands mirror each other, so they are not both at
+// the left of the shoulders; each is at its own side, and the dominant hand's target, written
+// the same way, at its own shoulder top. Read literally, the right hand started at the left
+// shoulder and the left hand, mirroring the movement, crossed to the right shoulder top (the
+// corpus's sześć tygodni temu 115 mm deep).
+TEST(SynthesisLocation, APairWrittenAtOneSideOfAPlaceIsEachHandAtItsOwnSide) {
+  expect_each_hand_on_its_own_side(
+      "hamsymmlr,hamfinger2345,hamthumboutmod,hamextfingeru,hampalmd,"
+      "hamparbegin,hamlrat,hamshoulders,hamplus,hamlrat,hamshoulders,hamparend,"
+      "hamparbegin,hammoveil,hamclose,hamreplace,hamextfingeri,hampalmd,hamlrat,hamshouldertop,"
+      "hamparend",
+      "hamsymmlr,hamfinger2345,hamthumboutmod,hamextfingeru,hampalmd,"
+      "hamparbegin,hamshoulders,hamlrat,hamplus,hamlrat,hamshoulders,hamparend,"
+      "hamparbegin,hammoveil,hamclose,hamreplace,hamextfingeri,hampalmd,hamshouldertop,hamlrat,"
+      "hamparend");
+}
+
+// A symmetric sign that writes the two hands' configurations and one place ("hamsymmpar
+// hamparbegin config hamplus config hamparend hamshoulders hamclose"): the other hand is at the
+// mirror place, as a hand copied under a symmetry is. Its HandSpec, made for the configurations,
+// kept neutral space (the corpus's dziewięć tygodni temu: the left hand from there to the right
+// shoulder top, 109 mm deep).
+TEST(SynthesisLocation, APairWithTwoConfigurationsAndOnePlaceHasTheOtherHandAtTheMirrorPlace) {
+  expect_each_hand_on_its_own_side(
+      "hamsymmlr,hamparbegin,hamfinger2345,hamthumbacrossmod,hamextfingeru,hampalmd,hamplus,"
+      "hamfinger2345,hamthumboutmod,hamextfingeru,hampalmd,hamparend,hamchest,hamlrbeside,hamclose,"
+      "hammoveu",
+      "hamsymmlr,hamparbegin,hamfinger2345,hamthumbacrossmod,hamextfingeru,hampalmd,hamplus,"
+      "hamfinger2345,hamthumboutmod,hamextfingeru,hampalmd,hamparend,"
+      "hamparbegin,hamchest,hamlrbeside,hamclose,hamplus,hamlrbeside,hamchest,hamclose,hamparend,"
+      "hammoveu");
+}
+
 }  // namespace
 }  // namespace sw::synthesis

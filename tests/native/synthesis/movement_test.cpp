@@ -506,6 +506,49 @@ TEST(SynthesisMovementTwoHands, APairOnEachOtherMovingToTheBodyMovesAsOne) {
   }
 }
 
+// A symmetric pair on each other that both circle (the corpus's AUGUST5 and TO-MIX2: "hampalm
+// hamclose hamcircleu", the dominant palm down on the other's, both hands circling): each hand goes
+// its own circle in space (sign_motion.cpp, the frames' `travel`). The dominant hand's target is
+// an offset from the other hand as posed at each frame, which carries the other's circle; its
+// own circle added to that took it round about twice as far in and out (the right palm's forward
+// range 155 mm to the left's 81 on the project avatar; AUGUST5's forearm 55 mm into the chest).
+TEST(SynthesisMovementTwoHands, APairOnEachOtherCirclingGoesEachHandsOwnCircle) {
+  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(
+      "hamsymmlr,hamparbegin,hamfinger2345,hamextfingerol,hampalmd,hamplus,hamfinger2345,"
+      "hamextfingeror,hampalmu,hamparend,hampalm,hamclose,hamcircleu");
+  ASSERT_EQ(read.size(), 1u);
+  ASSERT_TRUE(read[0].ok() && read[0].spec);
+  std::string error;
+  const NamedRigs rigs = reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  for (const auto& [name, av] : rigs) {
+    Rig rig;
+    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+    SynthesisResult r = synthesize_sign(*read[0].spec, av);
+    ASSERT_TRUE(r.ok()) << r.errors[0].message;
+    int first = first_sign_frame(r.clip), last = first;
+    for (const auto& seg : r.clip.segments)
+      if (seg.kind == ClipSegment::Kind::Sign)
+        last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+    float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};  // each palm's range along forward
+    for (int f = first; f <= last; ++f) {
+      const PoseBuilder pb = frame_pose(rig, r.clip, f);
+      for (Side side : {kLeft, kRight}) {
+        const float z =
+            glm::dot(hand_part(pb, side, notation::HandPlace::Palm, 1).point, rig.forward);
+        lo[side] = std::min(lo[side], z);
+        hi[side] = std::max(hi[side], z);
+      }
+    }
+    const float right_m = hi[kRight] - lo[kRight], left_m = hi[kLeft] - lo[kLeft];
+    std::printf("%s: forward range right %.0f mm, left %.0f mm, deepest %.1f mm\n", name.c_str(),
+                right_m * 1000.0f, left_m * 1000.0f, r.report.max_penetration_m * 1000.0f);
+    EXPECT_GT(left_m, 0.05f) << name << ": the other hand did not circle";
+    EXPECT_LT(right_m, left_m + 0.03f) << name;
+    EXPECT_LE(r.report.max_penetration_m, 0.005f) << name;
+  }
+}
+
 TEST(SynthesisMovementTwoHands, HandsThatMeetAtTheGoalArePartedAlongTheMovement) {
   ProjectAvatar project = load_project_avatar();
   ASSERT_TRUE(project.error.empty()) << project.error;
