@@ -268,11 +268,7 @@ TEST(SynthesisLocation, AOneHandedSignMovingToTheOtherHandBringsThatHandUp) {
       ASSERT_TRUE(r.ok()) << r.errors[0].message;
       // The left wrist at the sign's last frame, against where it hangs at rest (the clip's first
       // frame).
-      int last = 0;
-      for (const ClipSegment& seg : r.clip.segments)
-        if (seg.kind == ClipSegment::Kind::Sign)
-          last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
-      last = std::min(last, r.clip.frame_count - 1);
+      const int last = last_sign_frame(r.clip);
       const int left_hand = rig.arms[kLeft].hand;
       const glm::vec3 at_rest = frame_pose(rig, r.clip, 0).position(left_hand);
       const PoseBuilder end = frame_pose(rig, r.clip, last);
@@ -330,11 +326,7 @@ TEST(SynthesisLocation, AOneHandedSignOnTheOtherArmPresentsThatArm) {
       ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
       SynthesisResult r = synthesize_sign(s, av);
       ASSERT_TRUE(r.ok()) << r.errors[0].message;
-      int last = 0;
-      for (const ClipSegment& seg : r.clip.segments)
-        if (seg.kind == ClipSegment::Kind::Sign)
-          last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
-      last = std::min(last, r.clip.frame_count - 1);
+      const int last = last_sign_frame(r.clip);
       const PoseBuilder end = frame_pose(rig, r.clip, last);
       PartPoint place;
       if (!anchor_point(av, end, hand_part_anchor_name(kLeft, c.place, 1), &place))

@@ -483,9 +483,7 @@ TEST(SynthesisMovementTwoHands, APairOnEachOtherMovingToTheBodyMovesAsOne) {
     SynthesisResult r = synthesize_sign(*read[0].spec, av);
     ASSERT_TRUE(r.ok()) << r.errors[0].message;
     EXPECT_LE(r.report.max_penetration_m, 0.005f) << c.names;
-    int first = first_sign_frame(r.clip), last = first;
-    for (const auto& seg : r.clip.segments)
-      if (seg.kind == ClipSegment::Kind::Sign) last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+    const int first = first_sign_frame(r.clip), last = last_sign_frame(r.clip);
     PoseBuilder start = frame_pose(rig, r.clip, first), end = frame_pose(rig, r.clip, last);
     float apart_m[2];
     int k = 0;
@@ -526,10 +524,7 @@ TEST(SynthesisMovementTwoHands, APairOnEachOtherCirclingGoesEachHandsOwnCircle) 
     ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
     SynthesisResult r = synthesize_sign(*read[0].spec, av);
     ASSERT_TRUE(r.ok()) << r.errors[0].message;
-    int first = first_sign_frame(r.clip), last = first;
-    for (const auto& seg : r.clip.segments)
-      if (seg.kind == ClipSegment::Kind::Sign)
-        last = static_cast<int>(std::lround(seg.end_s * r.clip.fps));
+    const int first = first_sign_frame(r.clip), last = last_sign_frame(r.clip);
     float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};  // each palm's range along forward
     for (int f = first; f <= last; ++f) {
       const PoseBuilder pb = frame_pose(rig, r.clip, f);

@@ -130,6 +130,15 @@ inline int first_sign_frame(const Clip& clip) {
   return 0;
 }
 
+// Last frame of the last Sign/Letter segment (within the clip), or 0 with none.
+inline int last_sign_frame(const Clip& clip) {
+  int last = 0;
+  for (const auto& s : clip.segments)
+    if (s.kind == ClipSegment::Kind::Sign || s.kind == ClipSegment::Kind::Letter)
+      last = static_cast<int>(std::lround(s.end_s * clip.fps));
+  return std::min(last, clip.frame_count - 1);
+}
+
 inline float deg(float rad) { return rad * 57.2957795f; }
 // The angle between two unit directions (a requested and a posed palm normal or finger
 // direction), in degrees.
