@@ -437,7 +437,12 @@ class GReader {
       if (!spec_.nondominant) spec_.nondominant = spec_.dominant;
       spec_.nondominant->location = nd_location;
     }
-    if (spec_.dominant.location.kind == Location::Kind::OtherHand) spec_.nondominant_is_place = true;
+    // The other hand is a still place only without a symmetry (lr_symm / both_hands), as the
+    // HamNoSys reader has it (hamnosys_parser.cpp): with one, both hands make the motions, the
+    // non-dominant one mirrored, and the contact is between them.
+    if (spec_.dominant.location.kind == Location::Kind::OtherHand &&
+        spec_.symmetry == Symmetry::None)
+      spec_.nondominant_is_place = true;
     initial_dom_ = spec_.dominant;
     initial_nd_ = spec_.nondominant ? *spec_.nondominant : spec_.dominant;
     // Motions.

@@ -22,9 +22,7 @@ SignSpec read_clean(const std::string& text) {
 }
 
 // Printed (both spellings, and as H-SiGML and G-SiGML) and read again: the same SignSpec.
-// `gsigml` false: a sign G-SiGML cannot say exactly (below), or a symmetric pair on each other,
-// which gsigml_reader.cpp still reads with nondominant_is_place (changed like this reader, the
-// NGT corpus had 20 more signs over 5 mm: open, see docs/NOTATION.md).
+// `gsigml` false: a sign G-SiGML cannot say exactly (below).
 void expect_round_trip(const SignSpec& s, bool gsigml = true) {
   for (HamNoSysSpelling spelling : {HamNoSysSpelling::Unicode, HamNoSysSpelling::Names}) {
     const std::string printed = print_hamnosys(s, spelling);
@@ -123,7 +121,7 @@ TEST(HamNoSysLocations, ASymmetricPairOnEachOtherMovesBothHands) {
   ASSERT_EQ(s.movements.size(), 1u);
   EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Circle);
   EXPECT_TRUE(s.movements[0].nondominant.empty());  // follows the symmetry
-  expect_round_trip(s, false);
+  expect_round_trip(s);
 }
 
 // One handshape for both hands and their orientations paired after it (147 signs of the
@@ -188,7 +186,7 @@ TEST(HamNoSysLocations, AConstellationAtABodyLocationIsThePairsPlaceNotAMovement
   EXPECT_EQ(s.nondominant->orientation.palm, (Direction{0, -1, 0}));
   ASSERT_EQ(s.movements.size(), 1u) << "the body location was read as a movement";
   EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Circle);
-  expect_round_trip(s, false);
+  expect_round_trip(s);
 
   // A single place on the other hand with its contact, then the body location and its contact.
   const SignSpec t = read_clean(

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "notation/hamnosys.h"
 #include "notation/sign_spec_json.h"
 
 namespace sw::notation {
@@ -102,6 +103,40 @@ TEST(SiGML, BrokenDocumentKeepsItsCompleteSigns) {
   EXPECT_EQ(v[0].gloss, "OK");
   EXPECT_FALSE(v[1].ok());  // the document-level error
   EXPECT_NE(v[1].diagnostics[0].message.find("expected the end tag"), std::string::npos);
+}
+
+// A hand on the other hand: under a symmetry (lr_symm) both hands make the motion, the contact
+// between them, as the HamNoSys reader has it (hamsymmlr ... hamhandback hamtouch hamcirclei);
+// without one the other hand is the still place. The G-SiGML reader made the other hand a
+// still place in both, so such a pair did not round-trip through G-SiGML.
+TEST(SiGML, ASymmetricPairOnEachOtherMovesBothHandsAsInHamNoSys) {
+  auto read = [](const std::string& sign_manual) {
+    const std::vector<SignParse> v =
+        parse_sigml_text("<sigml><hamgestural_sign gloss=\"PAIR\">" + sign_manual +
+                         "<handconfig handshape=\"flat\" extfidir=\"o\" palmor=\"d\"/>"
+                         "<location_hand location=\"handback\" contact=\"touch\"/>"
+                         "<circularmotion axis=\"i\"/>"
+                         "</sign_manual></hamgestural_sign></sigml>");
+    EXPECT_EQ(v.size(), 1u);
+    EXPECT_TRUE(!v.empty() && v[0].ok() && v[0].spec);
+    return v.empty() || !v[0].spec ? SignSpec{} : *v[0].spec;
+  };
+  const SignSpec pair = read("<sign_manual both_hands=\"true\" lr_symm=\"true\">");
+  EXPECT_EQ(pair.symmetry, Symmetry::MirrorLR);
+  EXPECT_EQ(pair.dominant.location.kind, Location::Kind::OtherHand);
+  EXPECT_EQ(pair.dominant.location.hand_place, HandPlace::BackOfHand);
+  EXPECT_FALSE(pair.nondominant_is_place);
+  const std::vector<SignParse> hns = parse_hamnosys_text(
+      "hamsymmlr,hamflathand,hamextfingero,hampalmd,hamhandback,hamtouch,hamcirclei");
+  ASSERT_EQ(hns.size(), 1u);
+  ASSERT_TRUE(hns[0].ok() && hns[0].spec);
+  SignSpec same = *hns[0].spec;
+  same.gloss = pair.gloss;
+  EXPECT_EQ(sign_to_json_text(pair), sign_to_json_text(same));
+
+  const SignSpec one_moving = read("<sign_manual>");
+  EXPECT_EQ(one_moving.symmetry, Symmetry::None);
+  EXPECT_TRUE(one_moving.nondominant_is_place);
 }
 
 }  // namespace
