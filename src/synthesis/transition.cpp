@@ -240,14 +240,45 @@ void interpolate_direct(const glm::quat* a, const glm::quat* b, int joints, int 
   }
 }
 
+// The direct slerp's samples (JointSlerp::at, before the offsets) of one transition at the state
+// counts already sampled: every via candidate of plan_transition's search shares the direct path
+// from `from` to `to`, samples it at kPathSamples for its length and often at the same k as
+// another candidate, and each sample is the same arithmetic on the same values (bit-identical).
+class DirectSamples {
+ public:
+  // The k-1 states' samples, joint-major per state; computed with `path` on first use of k.
+  const glm::quat* at(const std::vector<JointSlerp>& path, int k) {
+    for (const Entry& e : entries_)
+      if (e.k == k) return e.samples.data();
+    Entry e;
+    e.k = k;
+    const size_t joints = path.size();
+    e.samples.resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
+    for (int i = 1; i < k; ++i) {
+      const float m = minimum_jerk(static_cast<float>(i) / k);
+      for (size_t j = 0; j < joints; ++j) math::lanes::store4(&e.samples[(i - 1) * joints + j], path[j].at(m));
+    }
+    entries_.push_back(std::move(e));
+    return entries_.back().samples.data();
+  }
+
+ private:
+  struct Entry {
+    int k = 0;
+    std::vector<glm::quat> samples;
+  };
+  std::vector<Entry> entries_;
+};
+
 // With via-poses: each joint's direct slerp and each via's offset slerp from the identity set up
 // once for all the states (JointSlerp), the offsets right-multiplied and the sum normalised four
 // lanes at a time (math/quat_lanes.h): the same arithmetic on the same values as
 // normalize(slerp_shortest(a, b, e) * slerp_shortest(1, delta, w) * ...), bit-identical. The path
 // searches of plan_transition sample every via candidate several times (its length, its states,
 // their re-timing), so the acos and sines per joint per state were most of a routed sign's time.
+// `direct` (optional): the samples of the direct slerp from a to b kept across calls.
 void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>& vias, int joints, int k,
-                 std::vector<glm::quat>* out) {
+                 std::vector<glm::quat>* out, DirectSamples* direct = nullptr) {
   if (vias.empty()) return interpolate_direct(a, b, joints, k, out);
   out->resize(static_cast<size_t>(std::max(0, k - 1)) * joints);
   std::vector<JointSlerp> path, offsets;
@@ -266,6 +297,7 @@ void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>&
     for (size_t v = 0; all && v < vias.size(); ++v) all = offsets[v * static_cast<size_t>(joints) + j].constant;
     fixed[static_cast<size_t>(j)] = all;
   }
+  const glm::quat* direct_at = direct ? direct->at(path, k) : nullptr;
   std::vector<float> w(vias.size());
   std::vector<char> first_weighted(vias.size(), 0);
   float first_e = 0.0f;
@@ -284,7 +316,8 @@ void interpolate(const glm::quat* a, const glm::quat* b, const std::vector<Via>&
         (*out)[static_cast<size_t>(i - 1) * joints + j] = (*out)[static_cast<size_t>(j)];
         continue;
       }
-      math::lanes::Float4 q = path[j].at(e);
+      math::lanes::Float4 q = direct_at ? math::lanes::load4(direct_at[static_cast<size_t>(i - 1) * joints + j])
+                                        : path[j].at(e);
       for (size_t v = 0; v < vias.size(); ++v)
         if (w[v] > 0.0f) q = math::lanes::quat_mul(q, offsets[v * static_cast<size_t>(joints) + j].at(w[v]));
       math::lanes::store4(&(*out)[static_cast<size_t>(i - 1) * joints + j], math::lanes::quat_normalize(q));
@@ -459,26 +492,57 @@ struct ExcessBound {
   float hand_floor_m = 0.0f, arm_floor_m = 0.0f, above_m = 0.0f;
 };
 
+// With a bound, the frames are checked outward from the one nearest `deep_tau` (0..1 of the
+// transition; `*deep_tau` is then set to where this call found its deepest frame): a routing
+// search's candidates are deep at about the same time of the path, so a losing candidate passes
+// the bound at its first few frames instead of after the shallow start. The order cannot change
+// a result the caller uses: a full scan takes the maximum of every frame, and a scan cut short
+// returns depths already past the bound whatever frames it measured (the candidate loses).
 KindDepths depths_by_kind(const SynthContext& ctx, const glm::quat* frames, int frame_count, const std::uint8_t* exempt,
-                          const ExcessBound* bound = nullptr) {
+                          const ExcessBound* bound = nullptr, float* deep_tau = nullptr) {
   const Rig& rig = ctx.rig;
   KindDepths d;
   PoseBuilder pb(rig);
-  for (int f = 0; f < frame_count; ++f) {
+  const int k = frame_count + 1;  // the transition's states: frame f is at tau (f + 1) / k
+  const int start =
+      deep_tau ? std::min(std::max(static_cast<int>(std::lround(*deep_tau * k)) - 1, 0), std::max(frame_count - 1, 0))
+               : 0;
+  float deepest = -1.0f;
+  int deepest_frame = start;
+  for (int n = 0; n < frame_count; ++n) {
     if (bound && excess_over(d, bound->hand_floor_m, bound->arm_floor_m) > bound->above_m) break;
+    // start, start + 1, start - 1, start + 2, ...; past one end, the rest of the other side.
+    int f = n;
+    if (start > 0) {
+      const int below = start, above = frame_count - 1 - start;  // frames either side of start
+      const int pair = (n + 1) / 2;
+      if (n == 0) f = start;
+      else if (pair <= std::min(below, above)) f = n % 2 ? start + pair : start - pair;
+      else if (above > below) f = start + (n - below);
+      else f = start - (n - above);
+    }
     const glm::quat* frame = frames + static_cast<size_t>(f) * rig.joint_count;
     if (f > 0 && exempt[f] == exempt[f - 1] &&
         std::memcmp(frame, frame - rig.joint_count, sizeof(glm::quat) * rig.joint_count) == 0)
       continue;
     pb.set_from_local(frame);
+    float here = 0.0f;
     for (int s = 0; s < 2; ++s) {
       const Side side = static_cast<Side>(s);
       const bool trunk = !(exempt[f] & exempt_bit(side, false));
       const bool hands = !(exempt[f] & exempt_bit(side, true)) && !(exempt[f] & exempt_bit(other(side), true));
-      d.hand_m = std::max(d.hand_m, hand_penetration(ctx.body, pb, side, trunk, hands).depth_m);
-      d.arm_m = std::max(d.arm_m, arm_penetration(ctx.body, pb, side, true, !trunk, hands && s == 0).depth_m);
+      const float hand_m = hand_penetration(ctx.body, pb, side, trunk, hands).depth_m;
+      const float arm_m = arm_penetration(ctx.body, pb, side, true, !trunk, hands && s == 0).depth_m;
+      d.hand_m = std::max(d.hand_m, hand_m);
+      d.arm_m = std::max(d.arm_m, arm_m);
+      here = std::max(here, std::max(hand_m, arm_m));
+    }
+    if (here > deepest) {
+      deepest = here;
+      deepest_frame = f;
     }
   }
+  if (deep_tau && frame_count > 0) *deep_tau = static_cast<float>(deepest_frame + 1) / k;
   return d;
 }
 
@@ -589,11 +653,15 @@ float arm_accel_between_states(const Rig& rig, const glm::quat* from, const glm:
 // Stretches k (re-sampling the states with `sample`) until no arm joint accelerates beyond
 // kArmPeakAccelMPerS2, up to kAccelRounds times; `chain`: a path with corners (waypoints), also
 // measured between the states.
+// `posed` (optional): the accel points' scaled positions of the states as they are on entry
+// (arm_accel's pos, from a walk over them the caller made anyway), used for the first round.
 template <typename Sampler>
 void stretch_for_arm_accel(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, Sampler sample,
-                           bool chain, int* k, std::vector<glm::quat>* frames) {
+                           bool chain, int* k, std::vector<glm::quat>* frames,
+                           const std::vector<glm::vec3>* posed = nullptr) {
   for (int round = 0; round < kAccelRounds; ++round) {
-    float a = arm_accel(rig, from, to, *frames, *k, fps);
+    float a = round == 0 && posed ? arm_accel_of(*posed, posed->size() / static_cast<size_t>(*k + 1), *k, fps)
+                                  : arm_accel(rig, from, to, *frames, *k, fps);
     if (chain && a > kAccelBetweenFrom * kArmPeakAccelMPerS2)
       a = std::max(a, arm_accel_between_states(rig, from, to, sample, *k, fps));
     if (a <= kArmPeakAccelMPerS2) return;
@@ -939,13 +1007,20 @@ void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::qua
   p->lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p->k = transition_states(p->lmax_m, fps, speed);
   sample(p->k, &p->frames);
-  // The longest step a frame of an arm joint and of any other joint (fingers, fingertips).
+  // The longest step a frame of an arm joint and of any other joint (fingers, fingertips). The
+  // same walk keeps the acceleration measure's points (arm_accel's positions, the same bits as
+  // its own pose of them: SubsetPose), so where the states stay, its first round poses nothing.
   float arm_step_m = 0.0f, finger_step_m = 0.0f;
+  const AccelPoints points = accel_point_list(rig);
+  const size_t n_points = points.joints.size();
+  std::vector<glm::vec3> accel_pos(static_cast<size_t>(p->k + 1) * n_points);
   {
     PoseBuilder pb(rig);
     std::vector<glm::vec3> prev(J), cur(J);
     for (int i = 0; i <= p->k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p->k ? to : &p->frames[static_cast<size_t>(i - 1) * J]);
+      for (size_t n = 0; n < n_points; ++n)
+        accel_pos[static_cast<size_t>(i) * n_points + n] = points.scale[n] * pb.position(points.joints[n]);
       for (int j = 0; j < J; ++j) {
         cur[j] = pb.position(j);
         if (i == 0) continue;
@@ -958,11 +1033,12 @@ void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::qua
   const float peak_step_m = profile_peak_step_m(p->lmax_m, p->k);
   const float finger_peak_m = finger_peak_step_m(fps, speed);
   const float stretch = std::max(arm_step_m / peak_step_m, finger_step_m / finger_peak_m);
-  if (stretch > 1.0f) {
+  const bool resampled = stretch > 1.0f;
+  if (resampled) {
     p->k = static_cast<int>(std::ceil(p->k * stretch));
     sample(p->k, &p->frames);
   }
-  stretch_for_arm_accel(rig, from, to, fps, sample, chain, &p->k, &p->frames);
+  stretch_for_arm_accel(rig, from, to, fps, sample, chain, &p->k, &p->frames, resampled ? nullptr : &accel_pos);
 }
 
 // interpolate_chain's path through the hand-path waypoints, computed for what differs: the
@@ -1522,6 +1598,11 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // win (consider's both tests fail, and the excess only grows): its remaining states are not
   // checked (depths_by_kind's bound).
   auto losing_bound = [&] { return ExcessBound{hand_floor_m, arm_floor_m, best_excess + 1e-4f}; };
+  // Where along the path the last candidate measured was deepest (at first the direct path's
+  // worst state): the next candidate's depths are checked outward from there (depths_by_kind).
+  float deep_tau = static_cast<float>(worst + 1) / plan.k;
+  // The direct slerp's samples every candidate's via-poses ride on (interpolate).
+  DirectSamples direct_samples;
   // A via-pose at time `tau` of the direct path: each pushed hand's wrist target moved by its
   // push, the arm re-solved by the arm IK with the body model (shoulder girdle included, so the
   // clavicle's protraction travels with the arm instead of being slerped apart from it);
@@ -1557,19 +1638,19 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   auto plan_with = [&](const std::vector<Via>& vias) {
     std::pair<TransitionPlan, float> out;
     TransitionPlan& p = out.first;
-    auto sample_vias = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, vias, J, k, out); };
+    auto sample_vias = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, vias, J, k, out, &direct_samples); };
     p.via_points = static_cast<int>(vias.size());
     if (hand_path_tried) {
       time_rest_path_by_arm(rig, from, to, fps, speed, sample_vias, false, &p);
     } else {
       p.lmax_m = path_length(rig, from, to, sample_vias);  // eq. (10) along the routed path
       p.k = transition_states(p.lmax_m, fps, speed);
-      interpolate(from, to, vias, J, p.k, &p.frames);
+      sample_vias(p.k, &p.frames);
       stretch_for_arm_accel(rig, from, to, fps, sample_vias, false, &p.k, &p.frames);
     }
     p.exempt = exempt_for(p.k);
     const ExcessBound bound = losing_bound();
-    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
+    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound, &deep_tau);
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);
     out.second = excess_of(d);
     return out;
@@ -1590,7 +1671,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
       time_rest_path_by_arm(rig, from, to, fps, speed, sample, true, &p);
       p.exempt = exempt_for(p.k);
       const ExcessBound bound = losing_bound();
-      const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
+      const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound, &deep_tau);
       p.max_penetration_m = std::max(d.hand_m, d.arm_m);
       result.second = excess_of(d);
       return result;
@@ -1612,7 +1693,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     stretch_for_arm_accel(rig, from, to, fps, sample, true, &p.k, &p.frames);
     p.exempt = exempt_for(p.k);
     const ExcessBound bound = losing_bound();
-    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound);
+    const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound, &deep_tau);
     p.max_penetration_m = std::max(d.hand_m, d.arm_m);
     result.second = excess_of(d);
     return result;
