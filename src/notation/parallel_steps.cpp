@@ -11,7 +11,8 @@ MovementStep join_parallel_steps(const std::vector<MovementStep>& parts) {
     joined.nondominant.insert(joined.nondominant.end(), p.nondominant.begin(), p.nondominant.end());
     any_stays = any_stays || p.nondominant_stays;
     // A part whose dominant movements the other hand follows by the symmetry.
-    if (!p.dominant.empty() && p.nondominant.empty() && !p.nondominant_stays) every_follower_stays = false;
+    if (!p.dominant.empty() && p.nondominant.empty() && !p.nondominant_stays)
+      every_follower_stays = false;
   }
   joined.nondominant_stays = any_stays && every_follower_stays && joined.nondominant.empty();
   return joined;
