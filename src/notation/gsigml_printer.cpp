@@ -282,7 +282,7 @@ void step(Out* out, const MovementStep& s, const HandSpec& dom, const HandSpec& 
     --out->depth;
     out->line("</par_motion>");
   };
-  if (s.nondominant.empty()) {
+  if (s.nondominant.empty() && !s.nondominant_stays) {
     group(s.dominant, dom);
     return;
   }

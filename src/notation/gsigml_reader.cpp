@@ -14,6 +14,7 @@
 #include "notation/hamnosys_places.h"
 #include "notation/hamnosys_symbols.h"
 #include "notation/handshape.h"
+#include "notation/parallel_steps.h"
 #include "notation/sigml.h"
 
 namespace sw::notation {
@@ -474,14 +475,6 @@ class GReader {
     (nondominant ? s.nondominant : s.dominant).push_back(m);
     steps->push_back(std::move(s));
   }
-  static MovementStep merged(const std::vector<MovementStep>& steps) {
-    MovementStep s;
-    for (const MovementStep& p : steps) {
-      s.dominant.insert(s.dominant.end(), p.dominant.begin(), p.dominant.end());
-      s.nondominant.insert(s.nondominant.end(), p.nondominant.begin(), p.nondominant.end());
-    }
-    return s;
-  }
 
   void motion(const XmlElement& e, std::vector<MovementStep>* steps, bool nondominant) {
     Movement m;
@@ -536,7 +529,7 @@ class GReader {
     } else if (e.name == "par_motion") {
       std::vector<MovementStep> inner;
       for (const XmlElement& c : e.children) motion(c, &inner, nondominant);
-      if (!inner.empty()) steps->push_back(merged(inner));
+      if (!inner.empty()) steps->push_back(join_parallel_steps(inner));
     } else if (e.name == "split_motion") {
       if (e.children.size() != 2) {
         error(e, "split_motion", "expected two motions (dominant, non-dominant) in split_motion, found " +
@@ -546,7 +539,11 @@ class GReader {
       std::vector<MovementStep> inner;
       motion(e.children[0], &inner, false);
       motion(e.children[1], &inner, true);
-      if (!inner.empty()) steps->push_back(merged(inner));
+      if (inner.empty()) return;
+      MovementStep step = join_parallel_steps(inner);
+      // <nomotion/> for the other hand: it stays, it does not follow the symmetry.
+      if (e.children[1].name == "nomotion" && step.nondominant.empty()) step.nondominant_stays = true;
+      steps->push_back(std::move(step));
     } else if (e.name == "handconfig" || e.name == "split_handconfig" || is_location(e)) {
       // A configuration or place after the motions began: a change to it, as tgt_motion says.
       XmlElement wrapper;

@@ -9,6 +9,7 @@
 #include "notation/hamnosys_places.h"
 #include "notation/hamnosys_symbols.h"
 #include "notation/handshape.h"
+#include "notation/parallel_steps.h"
 #include "notation/text_position.h"
 
 namespace sw::notation {
@@ -691,6 +692,14 @@ class Reader {
   }
 
   // ---- actions
+  // Whether [i, end) holds a hamnomotion (the part of a group after hamplus that says the
+  // non-dominant hand does not move).
+  bool holds_nomotion(std::size_t i, std::size_t end) const {
+    for (; i < end; ++i)
+      if (s_[i].code == hamnomotion) return true;
+    return false;
+  }
+
   Movement* last_of(std::vector<MovementStep>* steps) {
     if (steps->empty() || steps->back().dominant.empty()) return nullptr;
     return &steps->back().dominant.back();
@@ -765,14 +774,13 @@ class Reader {
           read_actions(plus + 1, close, sign, &b);
           reading_nondominant_ = outer;
         }
-        MovementStep step;
-        for (MovementStep& s : a) {
-          step.dominant.insert(step.dominant.end(), s.dominant.begin(), s.dominant.end());
-          step.nondominant.insert(step.nondominant.end(), s.nondominant.begin(), s.nondominant.end());
-        }
+        MovementStep step = join_parallel_steps(a);
         for (MovementStep& s : b) {
           step.nondominant.insert(step.nondominant.end(), s.dominant.begin(), s.dominant.end());
         }
+        // "hamplus hamnomotion": the other hand stays, it does not follow the symmetry.
+        if (plus < close && b.empty() && holds_nomotion(plus + 1, close)) step.nondominant_stays = true;
+        if (!step.nondominant.empty()) step.nondominant_stays = false;
         if (!step.dominant.empty() || !step.nondominant.empty()) steps->push_back(std::move(step));
         i = close < end ? close + 1 : end;
         last_is_fresh = !steps->empty() && !steps->back().dominant.empty();
@@ -895,6 +903,7 @@ class Reader {
     Movement dom;
     dom.kind = MovementKind::Replace;
     std::optional<Movement> nd;
+    bool other_stays = false;
     auto fill = [&](std::size_t from, std::size_t to, const HandSpec& initial, Movement* m) {
       HandSpec h;
       h.shape.hamnosys_base.clear();
@@ -912,7 +921,11 @@ class Reader {
       const std::size_t plus = find_plus(i + 1, close);
       std::size_t j = fill(i + 1, plus, initial_dominant_, &dom);
       if (j < plus) error(j, "expected a hand configuration, found '" + s_[j].text + "'");
-      if (plus < close) {
+      if (plus < close && plus + 2 == close && s_[plus + 1].code == hamnomotion) {
+        // "hamreplace hamparbegin hand hamplus hamnomotion hamparend" (WHY3B): only the dominant
+        // hand changes; the other keeps its configuration instead of following the symmetry.
+        other_stays = true;
+      } else if (plus < close) {
         Movement m;
         m.kind = MovementKind::Replace;
         j = fill(plus + 1, close, initial_nondominant_, &m);
@@ -934,6 +947,7 @@ class Reader {
     MovementStep step;
     step.dominant.push_back(dom);
     if (nd) step.nondominant.push_back(*nd);
+    step.nondominant_stays = other_stays;
     steps->push_back(std::move(step));
     bool fresh = true;
     while (i < end && (is_movement_modifier(s_[i].code) && !in_group(s_[i].code, HamGroup::Arc))) {

@@ -277,12 +277,15 @@ std::vector<char32_t> hamnosys_symbols(const SignSpec& sign) {
   }
   const HandSpec& nd_initial = sign.nondominant ? *sign.nondominant : sign.dominant;
   for (const MovementStep& step : sign.movements) {
-    const bool group = step.dominant.size() != 1 || !step.nondominant.empty();
+    const bool other_stays = step.nondominant_stays && step.nondominant.empty();
+    const bool group = step.dominant.size() != 1 || !step.nondominant.empty() || other_stays;
     if (group) out.push_back(hamparbegin);
     for (const Movement& m : step.dominant) append(&out, movement_symbols(m, sign.dominant));
     if (!step.nondominant.empty()) {
       out.push_back(hamplus);
       for (const Movement& m : step.nondominant) append(&out, movement_symbols(m, nd_initial));
+    } else if (other_stays) {
+      append(&out, {hamplus, hamnomotion});
     }
     if (group) out.push_back(hamparend);
   }

@@ -152,6 +152,12 @@ struct Movement {
 struct MovementStep {
   std::vector<Movement> dominant;      // all at once for the dominant hand
   std::vector<Movement> nondominant;   // all at once for the other hand (empty: follows symmetry)
+  // The other hand holds its place during this step although the sign has a symmetry (HamNoSys
+  // `hamparbegin MOTION hamplus hamnomotion hamparend`, G-SiGML `<split_motion>` with
+  // `<nomotion/>` for the other hand): its empty list then does not follow the symmetry. Only
+  // with `nondominant` empty (the readers set it so). The dominant hand needs no such mark: an
+  // empty `dominant` is already a hand that stays (`hamparbegin hamnomotion hamplus MOTION`).
+  bool nondominant_stays = false;
 };
 
 enum class RepeatKind : std::uint8_t { None, FromStart, Continuing, Reverse, FromStartSeveral,

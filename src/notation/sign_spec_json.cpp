@@ -229,7 +229,10 @@ json sign_to_json(const SignSpec& s) {
     json d = json::array(), n = json::array();
     for (const Movement& m : step.dominant) d.push_back(movement_json(m));
     for (const Movement& m : step.nondominant) n.push_back(movement_json(m));
-    steps.push_back({{"dominant", d}, {"nondominant", n}});
+    json js = {{"dominant", d}, {"nondominant", n}};
+    // Written only when set, so that every other sign's JSON (stored by the server) is as before.
+    if (step.nondominant_stays) js["nondominant_stays"] = true;
+    steps.push_back(std::move(js));
   }
   const NonManual& nm = s.nonmanual;
   return {{"gloss", s.gloss},
@@ -280,6 +283,10 @@ bool sign_from_json(const json& j, SignSpec* out, std::string* error) {
     MovementStep ms;
     if (!n || !in.movements(*d, p + ".dominant", &ms.dominant) ||
         !in.movements(*n, p + ".nondominant", &ms.nondominant)) {
+      return false;
+    }
+    if (step.is_object() && step.contains("nondominant_stays") &&
+        !in.boolean(step, "nondominant_stays", p, &ms.nondominant_stays)) {
       return false;
     }
     s.movements.push_back(std::move(ms));

@@ -1313,7 +1313,9 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   for (const auto& step : sign.movements) {
     d.steps.push_back(step.dominant);
     std::vector<Movement> nd = step.nondominant;
-    if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place) {
+    // A step that says the other hand stays (hamplus hamnomotion, <nomotion/>) holds it where it
+    // is: the symmetry's copy would move the hand the notation keeps still (HANDENARBEID).
+    if (nd.empty() && sym != Symmetry::None && !sign.nondominant_is_place && !step.nondominant_stays) {
       nd = step.dominant;
       if (sign.dominant.location.kind == Location::Kind::OtherHand) {
         keep_pair_contact_on_the_dominant_hand(&nd);

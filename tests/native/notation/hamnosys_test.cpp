@@ -77,6 +77,48 @@ TEST(HamNoSys, TwoHandsSymmetryGroupsAndReplacement) {
   }
 }
 
+// "hamparbegin MOTION hamplus hamnomotion hamparend" under a symmetry: only the dominant hand
+// moves in that step. The reader kept no mark of the other hand's "no motion" (an empty list
+// follows the symmetry), so the synthesis moved both hands; printed back it lost the hamnomotion.
+TEST(HamNoSys, NoMotionForTheOtherHandInASplitStepIsKept) {
+  const SignParse p = one("hamsymmlr,hamflathand,hamextfingero,hampalmd,hamchest,"
+                          "hamparbegin,hammoveu,hamplus,hamnomotion,hamparend,hammoved");
+  ASSERT_TRUE(p.ok()) << (p.diagnostics.empty() ? "" : format_diagnostic(p.diagnostics[0]));
+  const SignSpec& s = *p.spec;
+  ASSERT_EQ(s.movements.size(), 2u);
+  ASSERT_EQ(s.movements[0].dominant.size(), 1u);
+  EXPECT_TRUE(s.movements[0].nondominant.empty());
+  EXPECT_TRUE(s.movements[0].nondominant_stays);
+  EXPECT_FALSE(s.movements[1].nondominant_stays);  // a plain step still follows the symmetry
+  // The dominant hand written still, the other moving: an empty dominant list, no mark.
+  const SignParse other = one("hamsymmlr,hamflathand,hamextfingero,hampalmd,hamchest,"
+                              "hamparbegin,hamnomotion,hamplus,hammoveu,hamparend");
+  ASSERT_TRUE(other.ok());
+  ASSERT_EQ(other.spec->movements.size(), 1u);
+  EXPECT_TRUE(other.spec->movements[0].dominant.empty());
+  EXPECT_EQ(other.spec->movements[0].nondominant.size(), 1u);
+  EXPECT_FALSE(other.spec->movements[0].nondominant_stays);
+  // A change of the dominant hand alone (the corpus's WHY3B): read, not an error.
+  const SignParse change = one("hamsymmlr,hamfinger2,hamextfingeruo,hampalmdl,hamchest,"
+                               "hamreplace,hamparbegin,hampalml,hamplus,hamnomotion,hamparend");
+  ASSERT_TRUE(change.ok()) << (change.diagnostics.empty() ? "" : format_diagnostic(change.diagnostics[0]));
+  ASSERT_EQ(change.spec->movements.size(), 1u);
+  EXPECT_EQ(change.spec->movements[0].dominant[0].kind, MovementKind::Replace);
+  EXPECT_TRUE(change.spec->movements[0].nondominant_stays);
+  // Printed and read again: the same signs, in both spellings.
+  for (const SignSpec* sign : {&s, &*other.spec, &*change.spec}) {
+    for (HamNoSysSpelling spelling : {HamNoSysSpelling::Unicode, HamNoSysSpelling::Names}) {
+      const std::string printed = print_hamnosys(*sign, spelling);
+      const SignParse again = one(printed);
+      ASSERT_TRUE(again.ok()) << printed;
+      EXPECT_EQ(sign_to_json(*again.spec), sign_to_json(*sign)) << print_hamnosys(*sign, HamNoSysSpelling::Names);
+    }
+  }
+  // A hand-written malformed group keeps its error.
+  EXPECT_FALSE(one("hamsymmlr,hamflathand,hamextfingero,hampalmd,hamchest,"
+                   "hamreplace,hamparbegin,hampalml,hamplus,hamnomotion,hammoveu,hamparend").ok());
+}
+
 TEST(HamNoSys, UnknownSymbolIsReportedWithPositionAndSkipped) {
   const SignParse p = one("hamflathand,hamfoo,hamextfingeru");
   ASSERT_EQ(p.diagnostics.size(), 1u);

@@ -139,5 +139,42 @@ TEST(SiGML, ASymmetricPairOnEachOtherMovesBothHandsAsInHamNoSys) {
   EXPECT_TRUE(one_moving.nondominant_is_place);
 }
 
+// <split_motion> with <nomotion/> for the other hand under lr_symm: only the dominant hand moves
+// in that step (the NGT HANDENARBEID). The reader kept no mark of it (an empty list follows the
+// symmetry) and the printer wrote the step as the dominant's motion alone. The same SignSpec as
+// the HamNoSys reader's for "hamparbegin hammoveu hamplus hamnomotion hamparend".
+TEST(SiGML, NoMotionForTheOtherHandInASplitMotionIsKept) {
+  const std::vector<SignParse> v = parse_sigml_text(
+      "<sigml><hamgestural_sign gloss=\"STAYS\"><sign_manual both_hands=\"true\" lr_symm=\"true\">"
+      "<handconfig handshape=\"flat\" extfidir=\"o\" palmor=\"d\"/><location_bodyarm location=\"chest\"/>"
+      "<split_motion><directedmotion direction=\"u\"/><nomotion/></split_motion>"
+      "<directedmotion direction=\"d\"/>"
+      "</sign_manual></hamgestural_sign></sigml>");
+  ASSERT_EQ(v.size(), 1u);
+  ASSERT_TRUE(v[0].ok() && v[0].spec) << (v[0].diagnostics.empty() ? "" : format_diagnostic(v[0].diagnostics[0]));
+  const SignSpec& s = *v[0].spec;
+  ASSERT_EQ(s.movements.size(), 2u);
+  EXPECT_TRUE(s.movements[0].nondominant.empty());
+  EXPECT_TRUE(s.movements[0].nondominant_stays);
+  EXPECT_FALSE(s.movements[1].nondominant_stays);
+  const std::vector<SignParse> hns = parse_hamnosys_text(
+      "hamsymmlr,hamflathand,hamextfingero,hampalmd,hamchest,hamparbegin,hammoveu,hamplus,hamnomotion,"
+      "hamparend,hammoved");
+  ASSERT_EQ(hns.size(), 1u);
+  ASSERT_TRUE(hns[0].ok() && hns[0].spec);
+  SignSpec same = *hns[0].spec;
+  same.gloss = s.gloss;
+  EXPECT_EQ(sign_to_json_text(s), sign_to_json_text(same));
+  const std::string printed = print_gsigml({s});
+  const std::vector<SignParse> again = parse_sigml_text(printed);
+  ASSERT_EQ(again.size(), 1u);
+  ASSERT_TRUE(again[0].ok() && again[0].spec) << printed;
+  EXPECT_EQ(sign_to_json(*again[0].spec), sign_to_json(s)) << printed;
+  // A split_motion without its second motion keeps its error.
+  EXPECT_FALSE(parse_sigml_text("<sigml><hamgestural_sign gloss=\"BAD\"><sign_manual lr_symm=\"true\">"
+                                "<handconfig handshape=\"flat\"/><split_motion><nomotion/></split_motion>"
+                                "</sign_manual></hamgestural_sign></sigml>")[0].ok());
+}
+
 }  // namespace
 }  // namespace sw::notation

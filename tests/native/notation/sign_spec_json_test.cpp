@@ -26,6 +26,29 @@ TEST(SignSpecJson, BothDirectionsGiveTheSameSign) {
   EXPECT_EQ(print_formula(b), print_formula(a));
 }
 
+// The mark that the other hand stays in a step goes through JSON; JSON written before the mark
+// (without the field) still reads, as a step whose other hand follows the symmetry.
+TEST(SignSpecJson, AStepsOtherHandStayingGoesThroughJson) {
+  SignSpec a = *parse_formula_text("R(D1) Sym(lr)")[0].spec;
+  MovementStep step;
+  step.dominant.push_back(Movement{});
+  step.nondominant_stays = true;
+  a.movements.push_back(step);
+  nlohmann::json j = sign_to_json(a);
+  EXPECT_EQ(j["movements"][0]["nondominant_stays"], true);
+  SignSpec b;
+  std::string error;
+  ASSERT_TRUE(sign_from_json(j, &b, &error)) << error;
+  ASSERT_EQ(b.movements.size(), 1u);
+  EXPECT_TRUE(b.movements[0].nondominant_stays);
+  j["movements"][0].erase("nondominant_stays");
+  ASSERT_TRUE(sign_from_json(j, &b, &error)) << error;
+  EXPECT_FALSE(b.movements[0].nondominant_stays);
+  j["movements"][0]["nondominant_stays"] = "yes";
+  EXPECT_FALSE(sign_from_json(j, &b, &error));
+  EXPECT_EQ(error, "sign.movements[0].nondominant_stays: expected true or false");
+}
+
 TEST(SignSpecJson, MalformedDocumentsNameTheField) {
   SignSpec s;
   std::string error;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "notation/hamnosys.h"
+#include "notation/sigml.h"
 #include "synthesis/collision.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/phrase_text.h"
@@ -679,6 +680,49 @@ TEST(SynthesisMovementTwoHands, HandsPartedBeforeTheShouldersKeepTheElbowOutAtTh
                                << " mm above the shoulder";
     EXPECT_GT(least_out_m, 0.0f) << name << ": the right elbow " << least_out_m * 1000.0f
                                  << " mm out from the shoulder";
+  }
+}
+
+// A two-handed step in which only the dominant hand moves (HamNoSys `hamparbegin MOTION hamplus
+// hamnomotion hamparend`, G-SiGML `<split_motion>` with `<nomotion/>`), under a symmetry: the
+// non-dominant hand holds its place during the step. The readers kept no mark of the other hand's
+// "no motion", so the symmetry copied the dominant's movement to it and both hands moved (the NGT
+// HANDENARBEID, 63 HamNoSys corpus signs such as PEACE2A and długo).
+TEST(SynthesisMovementTwoHands, TheHandWrittenWithNoMotionInASplitStepStaysWhereItIs) {
+  const std::vector<notation::SignParse> hamnosys = notation::parse_hamnosys_text(
+      "hamsymmlr,hamflathand,hamextfingero,hampalml,hamchest,hamparbegin,hammoveu,hamplus,"
+      "hamnomotion,hamparend");
+  const std::vector<notation::SignParse> gsigml = notation::parse_sigml_text(
+      "<sigml><hamgestural_sign gloss=\"STAYS\"><sign_manual both_hands=\"true\" lr_symm=\"true\">"
+      "<handconfig handshape=\"flat\" extfidir=\"o\" palmor=\"l\"/><location_bodyarm location=\"chest\"/>"
+      "<split_motion><directedmotion direction=\"u\"/><nomotion/></split_motion>"
+      "</sign_manual></hamgestural_sign></sigml>");
+  std::string error;
+  const NamedRigs rigs = reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  for (const auto* read : {&hamnosys, &gsigml}) {
+    ASSERT_EQ(read->size(), 1u);
+    ASSERT_TRUE((*read)[0].ok() && (*read)[0].spec);
+    const std::string notation = read == &hamnosys ? "HamNoSys" : "G-SiGML";
+    for (const auto& [name, av] : rigs) {
+      Rig rig;
+      ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+      const SynthesisResult r = synthesize_sign(*(*read)[0].spec, av);
+      ASSERT_TRUE(r.ok()) << notation << ", " << name;
+      const int first = first_sign_frame(r.clip);
+      const PoseBuilder start = frame_pose(rig, r.clip, first);
+      const glm::vec3 left_start = start.position(rig.arms[kLeft].hand);
+      const glm::vec3 right_start = start.position(rig.arms[kRight].hand);
+      float left_most_m = 0.0f, right_most_m = 0.0f;
+      for (int f = first; f <= last_sign_frame(r.clip); ++f) {
+        const PoseBuilder pb = frame_pose(rig, r.clip, f);
+        left_most_m = std::max(left_most_m, glm::length(pb.position(rig.arms[kLeft].hand) - left_start));
+        right_most_m = std::max(right_most_m, glm::length(pb.position(rig.arms[kRight].hand) - right_start));
+      }
+      EXPECT_GT(right_most_m, 0.5f * movement_size_m(rig, notation::Size::Normal)) << notation << ", " << name;
+      EXPECT_LT(left_most_m, 0.005f) << notation << ", " << name << ": the left wrist moved "
+                                     << left_most_m * 1000.0f << " mm";
+    }
   }
 }
 
