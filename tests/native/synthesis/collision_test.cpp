@@ -507,20 +507,16 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
   // pose of 35.4), since the resting arm gives way. None is left.
   const std::vector<Known> known = {};
 
-
-  struct Rig_ { std::string name; avatar::Avatar avatar; };
-  std::vector<Rig_> rigs;
-  rigs.push_back({"reference", make_reference_humanoid()});
-  ProjectAvatar project = load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  std::string rig_error;
+  const NamedRigs rigs = reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   float worst_added = 0.0f;
-  for (const Rig_& rg : rigs) {
-    Synthesizer synth(rg.avatar);
+  for (const auto& [rig_name, av] : rigs) {
+    Synthesizer synth(av);
     ASSERT_TRUE(synth.ok()) << synth.error();
     SynthContext ctx;
     std::string error;
-    ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
+    ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
     for (int shape = 0; shape < kFarSideHands; ++shape)
       for (BodyLevel level : kFarSideLevels)
         for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
@@ -530,9 +526,9 @@ TEST(SynthesisCollision, FarSideRestTransitionsAreNoDeeperThanTheKeyPose) {
           crossing_arm_depths(ctx, r, kRight, &key, &clip);
           float bound_mm = std::max(key * 1000.0f, 5.0f) + 0.5f;  // 0.5 mm: sampling of the key pose's hold
           for (const Known& k : known)
-            if (k.c.rig == rg.name && k.c.shape == shape && k.c.level == level && k.c.contact == c)
+            if (k.c.rig == rig_name && k.c.shape == shape && k.c.level == level && k.c.contact == c)
               bound_mm = k.clip_mm;
-          const std::string where = rg.name + " shape " + std::to_string(shape) + " level " +
+          const std::string where = rig_name + " shape " + std::to_string(shape) + " level " +
                                     std::to_string(static_cast<int>(level)) + " contact " +
                                     std::to_string(static_cast<int>(c));
           EXPECT_LE(clip * 1000.0f, bound_mm) << where << " (key pose " << key * 1000.0f << " mm)";
@@ -713,20 +709,17 @@ TEST(SynthesisCollision, FistsTouchingBesideTheFarSideAreHeldToTheirMeasuredDept
 // the key pose's hand in the other, hanging forearm (21.6 mm) hid what the arm did on the way
 // (9 mm beyond its key pose). Now each kind is judged by what it adds beyond the end poses.
 TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
-  struct Rig_ { std::string name; avatar::Avatar avatar; };
-  std::vector<Rig_> rigs;
-  rigs.push_back({"reference", make_reference_humanoid()});
-  ProjectAvatar project = load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  std::string rig_error;
+  const NamedRigs rigs = reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   const notation::HandShape shapes[] = {flat(), fist(), index_point()};
   SynthesisOptions opt;
   opt.start_from_rest = false;
-  for (const Rig_& rg : rigs) {
+  for (const auto& [rig_name, av] : rigs) {
     SynthContext ctx;
     std::string error;
-    ASSERT_TRUE(make_context(rg.avatar, opt, &ctx, &error)) << error;
-    Synthesizer synth(rg.avatar);
+    ASSERT_TRUE(make_context(av, opt, &ctx, &error)) << error;
+    Synthesizer synth(av);
     ASSERT_TRUE(synth.ok()) << synth.error();
     float worst_excess = 0.0f;
     int phrases = 0;
@@ -739,7 +732,7 @@ TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
             a.dominant.orientation.extended_finger = {0, 1, 0};
             a.dominant.orientation.palm = {0, 0, -1};
             notation::SignSpec b = sign_at(shapes[shape], near, near_side, Contact::None);
-            SynthesisResult r = synthesize_phrase(items_of({a, b, a}), rg.avatar, opt);
+            SynthesisResult r = synthesize_phrase(items_of({a, b, a}), av, opt);
             ASSERT_TRUE(r.ok()) << r.errors[0].message;
             float in_transitions = 0.0f, in_signs = 0.0f;
             PoseBuilder pb(ctx.rig);
@@ -756,14 +749,15 @@ TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
             }
             const float excess = in_transitions - std::max(in_signs, 0.005f);
             EXPECT_LE(excess * 1000.0f, 0.5f)
-                << rg.name << " shape " << shape << " far level " << static_cast<int>(far) << " near level "
-                << static_cast<int>(near) << " side " << static_cast<int>(near_side) << " contact "
-                << static_cast<int>(c);
+                << rig_name << " shape " << shape << " far level " << static_cast<int>(far)
+                << " near level " << static_cast<int>(near) << " side "
+                << static_cast<int>(near_side) << " contact " << static_cast<int>(c);
             worst_excess = std::max(worst_excess, excess);
             ++phrases;
           }
     EXPECT_EQ(phrases, 192);
-    RecordProperty(rg.name + "_worst_transition_excess_mm", std::to_string(worst_excess * 1000.0f));
+    RecordProperty(rig_name + "_worst_transition_excess_mm",
+                   std::to_string(worst_excess * 1000.0f));
   }
 }
 
@@ -778,22 +772,19 @@ TEST(SynthesisCollision, CrossBodySignToSignTransitionsRouteRoundTheFront) {
 // the whole rest pose, whose finger metacarpals and tips kept their rest rotations under the
 // solved hand: 19 key poses stayed in the arm, up to 28.5 mm.)
 TEST(SynthesisCollision, TheRestingArmGivesWayToAHandAtTheFarSide) {
-  struct Rig_ { std::string name; avatar::Avatar avatar; };
-  std::vector<Rig_> rigs;
-  rigs.push_back({"reference", make_reference_humanoid()});
-  ProjectAvatar project = load_project_avatar();
-  ASSERT_TRUE(project.error.empty()) << project.error;
-  if (project.present) rigs.push_back({"avatar", std::move(project.avatar)});
+  std::string rig_error;
+  const NamedRigs rigs = reference_and_project_avatar(&rig_error);
+  ASSERT_TRUE(rig_error.empty()) << rig_error;
   const BodyLevel levels[] = {BodyLevel::Shoulders, BodyLevel::ShoulderTop, BodyLevel::Chest, BodyLevel::Stomach,
                               BodyLevel::Belly,     BodyLevel::Waist,       BodyLevel::BelowWaist};
   int over = 0;
   float worst = 0.0f;
-  for (const Rig_& rg : rigs) {
-    Synthesizer synth(rg.avatar);
+  for (const auto& [rig_name, av] : rigs) {
+    Synthesizer synth(av);
     ASSERT_TRUE(synth.ok()) << synth.error();
     SynthContext ctx;
     std::string error;
-    ASSERT_TRUE(make_context(rg.avatar, SynthesisOptions{}, &ctx, &error)) << error;
+    ASSERT_TRUE(make_context(av, SynthesisOptions{}, &ctx, &error)) << error;
     for (int shape = 0; shape < kFarSideHands; ++shape)
       for (BodyLevel level : levels)
         for (Contact c : {Contact::Touch, Contact::Close, Contact::None}) {
@@ -810,7 +801,7 @@ TEST(SynthesisCollision, TheRestingArmGivesWayToAHandAtTheFarSide) {
               in_other = std::max(in_other, hand_penetration(ctx.body, pb, kRight, false, true).depth_m);
             }
           }
-          const std::string where = rg.name + " shape " + std::to_string(shape) + " level " +
+          const std::string where = rig_name + " shape " + std::to_string(shape) + " level " +
                                     std::to_string(static_cast<int>(level)) + " contact " +
                                     std::to_string(static_cast<int>(c));
           EXPECT_LE(in_other * 1000.0f, 5.0f) << where;
@@ -834,11 +825,11 @@ TEST(SynthesisCollision, AOneHandedSignDoesNotReachForTheRestingHand) {
   std::string error;
   const NamedRigs rigs = reference_and_project_avatar(&error);
   ASSERT_TRUE(error.empty()) << error;
-  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(
-      "hamfinger2,hamextfingeru,hampalml,hamear,hamlrat,hamseqbegin,hamtouch,hamindexfinger,hamfingerpad,hamseqend");
-  ASSERT_EQ(read.size(), 1u);
-  ASSERT_TRUE(read[0].ok() && read[0].spec);
-  const notation::SignSpec s = *read[0].spec;
+  notation::SignSpec s;
+  ASSERT_TRUE(
+      read_one_hamnosys("hamfinger2,hamextfingeru,hampalml,hamear,hamlrat,hamseqbegin,hamtouch,"
+                        "hamindexfinger,hamfingerpad,hamseqend",
+                        &s));
   for (const auto& [name, av] : rigs) {
     Synthesizer synth(av);
     ASSERT_TRUE(synth.ok()) << synth.error();

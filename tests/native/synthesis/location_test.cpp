@@ -210,12 +210,11 @@ TEST(SynthesisLocation, OtherHandIsThePlace) {
 // for one-handed signs (the hand stayed at the ear with its default part). Read as the contact
 // part, the synthesis places the nail itself on the earlobe: within 1 cm (issue 4's reach).
 TEST(SynthesisLocation, ABracketedContactPartReachesTheEarlobeFromHamNoSys) {
-  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(
-      "hampinch12,hamextfingeru,hampalml,hamearlobe,hamlrat,"
-      "hamseqbegin,hamtouch,hamindexfinger,hamfingernail,hamseqend");
-  ASSERT_EQ(read.size(), 1u);
-  ASSERT_TRUE(read[0].ok() && read[0].spec);
-  const notation::SignSpec& s = *read[0].spec;
+  notation::SignSpec s;
+  ASSERT_TRUE(
+      read_one_hamnosys("hampinch12,hamextfingeru,hampalml,hamearlobe,hamlrat,"
+                        "hamseqbegin,hamtouch,hamindexfinger,hamfingernail,hamseqend",
+                        &s));
   ASSERT_TRUE(s.dominant.location.contact_part.has_value());
   for (int variant = 0; variant < 2; ++variant) {
     avatar::Avatar av = variant == 0 ? make_reference_humanoid() : make_rotated_variant(0.9f);
@@ -253,10 +252,8 @@ TEST(SynthesisLocation, AOneHandedSignMovingToTheOtherHandBringsThatHandUp) {
       "hamparend,"
       "hamchest,hamclose,hammovel,hampalm,hamtouch"};
   for (const char* names : signs) {
-    const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(names);
-    ASSERT_EQ(read.size(), 1u);
-    ASSERT_TRUE(read[0].ok() && read[0].spec);
-    const notation::SignSpec& s = *read[0].spec;
+    notation::SignSpec s;
+    ASSERT_TRUE(read_one_hamnosys(names, &s));
     ASSERT_EQ(s.movements.size(), 1u);
     ASSERT_TRUE(s.movements[0].dominant[0].to_location.has_value());
     for (int variant = 0; variant < 2; ++variant) {
@@ -314,10 +311,8 @@ TEST(SynthesisLocation, AOneHandedSignOnTheOtherArmPresentsThatArm) {
        notation::HandPlace::Fingertip, 1},
   };
   for (const Case& c : cases) {
-    const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(c.names);
-    ASSERT_EQ(read.size(), 1u);
-    ASSERT_TRUE(read[0].ok() && read[0].spec) << c.names;
-    const notation::SignSpec& s = *read[0].spec;
+    notation::SignSpec s;
+    ASSERT_TRUE(read_one_hamnosys(c.names, &s));
     ASSERT_FALSE(s.nondominant.has_value());
     for (int variant = 0; variant < 2; ++variant) {
       avatar::Avatar av = variant == 0 ? make_reference_humanoid() : make_rotated_variant(0.9f);
@@ -651,16 +646,17 @@ TEST(SynthesisLocation, AvatarWithoutArmsIsAnErrorValue) {
 // `as_meant`: the same sign written with each hand's place spelled out; the sign is no deeper
 // than it (+ 1 mm).
 void expect_each_hand_on_its_own_side(const char* hamnosys_names, const char* as_meant) {
-  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(hamnosys_names);
-  ASSERT_EQ(read.size(), 1u);
-  ASSERT_TRUE(read[0].ok() && read[0].spec);
+  notation::SignSpec sign;
+  ASSERT_TRUE(read_one_hamnosys(hamnosys_names, &sign));
+  notation::SignSpec meant_sign;
+  ASSERT_TRUE(read_one_hamnosys(as_meant, &meant_sign));
   std::string error;
   const NamedRigs rigs = reference_and_project_avatar(&error);
   ASSERT_TRUE(error.empty()) << error;
   for (const auto& [name, av] : rigs) {
     Rig rig;
     ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
-    const SynthesisResult r = synthesize_sign(*read[0].spec, av);
+    const SynthesisResult r = synthesize_sign(sign, av);
     ASSERT_TRUE(r.ok()) << name << ": " << r.errors[0].message;
     const glm::vec3 middle = rig.bind_pos[rig.neck];
     const PoseBuilder key = frame_pose(rig, r.clip, first_sign_frame(r.clip));
@@ -670,9 +666,7 @@ void expect_each_hand_on_its_own_side(const char* hamnosys_names, const char* as
                                << " mm to the left";
     EXPECT_GT(left_m, 0.05f) << name << ": the left wrist " << left_m * 1000.0f
                              << " mm to the left";
-    const std::vector<notation::SignParse> meant = notation::parse_hamnosys_text(as_meant);
-    ASSERT_TRUE(meant.size() == 1u && meant[0].ok() && meant[0].spec);
-    const float meant_m = synthesize_sign(*meant[0].spec, av).report.max_penetration_m;
+    const float meant_m = synthesize_sign(meant_sign, av).report.max_penetration_m;
     EXPECT_LE(r.report.max_penetration_m, meant_m + 0.001f)
         << name << ": " << r.report.max_penetration_m * 1000.0f << " mm, as meant "
         << meant_m * 1000.0f << " mm";

@@ -478,10 +478,9 @@ TEST(SynthesisMovementTwoHands, APairOnEachOtherMovingToTheBodyMovesAsOne) {
   std::string error;
   ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
   for (const Case& c : cases) {
-    const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(c.names);
-    ASSERT_EQ(read.size(), 1u);
-    ASSERT_TRUE(read[0].ok() && read[0].spec);
-    SynthesisResult r = synthesize_sign(*read[0].spec, av);
+    notation::SignSpec sign;
+    ASSERT_TRUE(read_one_hamnosys(c.names, &sign));
+    SynthesisResult r = synthesize_sign(sign, av);
     ASSERT_TRUE(r.ok()) << r.errors[0].message;
     EXPECT_LE(r.report.max_penetration_m, 0.005f) << c.names;
     const int first = first_sign_frame(r.clip), last = last_sign_frame(r.clip);
@@ -512,18 +511,18 @@ TEST(SynthesisMovementTwoHands, APairOnEachOtherMovingToTheBodyMovesAsOne) {
 // own circle added to that took it round about twice as far in and out (the right palm's forward
 // range 155 mm to the left's 81 on the project avatar; AUGUST5's forearm 55 mm into the chest).
 TEST(SynthesisMovementTwoHands, APairOnEachOtherCirclingGoesEachHandsOwnCircle) {
-  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(
+  notation::SignSpec sign;
+  ASSERT_TRUE(read_one_hamnosys(
       "hamsymmlr,hamparbegin,hamfinger2345,hamextfingerol,hampalmd,hamplus,hamfinger2345,"
-      "hamextfingeror,hampalmu,hamparend,hampalm,hamclose,hamcircleu");
-  ASSERT_EQ(read.size(), 1u);
-  ASSERT_TRUE(read[0].ok() && read[0].spec);
+      "hamextfingeror,hampalmu,hamparend,hampalm,hamclose,hamcircleu",
+      &sign));
   std::string error;
   const NamedRigs rigs = reference_and_project_avatar(&error);
   ASSERT_TRUE(error.empty()) << error;
   for (const auto& [name, av] : rigs) {
     Rig rig;
     ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
-    SynthesisResult r = synthesize_sign(*read[0].spec, av);
+    SynthesisResult r = synthesize_sign(sign, av);
     ASSERT_TRUE(r.ok()) << r.errors[0].message;
     const int first = first_sign_frame(r.clip), last = last_sign_frame(r.clip);
     float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};  // each palm's range along forward
@@ -651,18 +650,18 @@ using namespace testing;
 // and through the neck (87 mm). The rounds now count a trunk conflict their swivel makes, and the
 // elbow stays out at the side, below the head, with both arms out of the body.
 TEST(SynthesisMovementTwoHands, HandsPartedBeforeTheShouldersKeepTheElbowOutAtTheSide) {
-  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(
+  notation::SignSpec sign;
+  ASSERT_TRUE(read_one_hamnosys(
       "hamsymmlr,hamfinger2345,hamthumboutmod,hamextfingerol,hampalmd,hamshoulders,hamlrat,"
-      "hamclose,hammovei,hamtouch,hamrepeatfromstart");
-  ASSERT_EQ(read.size(), 1u);
-  ASSERT_TRUE(read[0].ok() && read[0].spec);
+      "hamclose,hammovei,hamtouch,hamrepeatfromstart",
+      &sign));
   std::string error;
   const NamedRigs rigs = reference_and_project_avatar(&error);
   ASSERT_TRUE(error.empty()) << error;
   for (const auto& [name, av] : rigs) {
     Rig rig;
     ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
-    const SynthesisResult r = synthesize_sign(*read[0].spec, av);
+    const SynthesisResult r = synthesize_sign(sign, av);
     ASSERT_TRUE(r.ok()) << name;
     EXPECT_LE(r.report.max_penetration_m, 0.005f) << name;
     const glm::vec3 outward = -rig.left;  // the right arm's side

@@ -7,9 +7,14 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "notation/diagnostic.h"
+#include "notation/hamnosys.h"
 
 #include "notation/sign_spec.h"
 #include "synthesis/handshape.h"
@@ -175,6 +180,26 @@ inline NamedRigs reference_and_project_avatar(std::string* error) {
   *error = project.error;
   if (project.present && project.error.empty()) rigs.push_back({"avatar", std::move(project.avatar)});
   return rigs;
+}
+
+// The one sign of a HamNoSys text (comma-separated symbol names, as the corpus writes them) into
+// `*out`. Fails, with the reader's diagnostics (line, column, symbol), when the text is not
+// exactly one sign read without error: `ASSERT_TRUE(read_one_hamnosys("hamfist,...", &s));`.
+inline ::testing::AssertionResult read_one_hamnosys(std::string_view names,
+                                                    notation::SignSpec* out) {
+  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(names);
+  if (read.size() != 1u)
+    return ::testing::AssertionFailure()
+           << read.size() << " signs read, not one, from \"" << names << '"';
+  if (!read[0].ok()) {
+    ::testing::AssertionResult failure = ::testing::AssertionFailure();
+    failure << "\"" << names << "\" is not read:";
+    for (const notation::Diagnostic& d : read[0].diagnostics)
+      failure << ' ' << notation::format_diagnostic(d) << ';';
+    return failure;
+  }
+  *out = *read[0].spec;
+  return ::testing::AssertionSuccess();
 }
 
 }  // namespace sw::synthesis::testing
