@@ -1040,11 +1040,26 @@ std::vector<bool> arm_joint_mask(const Rig& rig) {
 // direct path and the via-poses took 1.2-1.4 s where the hand's path takes 0.7-0.9 (DAY's hands
 // leaving each other for the rest: 1.43 s on the reference humanoid), and the far side's routed
 // pointing touches 3.6-3.8 s. `chain`: a path with corners (stretch_for_arm_accel).
+// `scratch`: the walk's buffers and the rig's joint lists, kept by plan_transition for its many
+// candidates (each of LOVE's 26 via candidates is timed so; allocated per call, they were most of
+// the walk's cost beyond the poses). Filled at the first use.
+struct RestPathScratch {
+  void prepare(const Rig& rig) {
+    if (!prev.empty() || rig.joint_count == 0) return;
+    arm_joints = arm_joint_mask(rig);
+    points = accel_point_list(rig);
+    prev.resize(static_cast<size_t>(rig.joint_count));
+  }
+  std::vector<bool> arm_joints;
+  AccelPoints points;
+  std::vector<glm::vec3> prev, accel_pos;
+};
 template <typename Sampler>
 void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, float speed,
-                           Sampler sample, bool chain, TransitionPlan* p) {
+                           Sampler sample, bool chain, RestPathScratch* scratch, TransitionPlan* p) {
   const int J = rig.joint_count;
-  const std::vector<bool> arm_joints = arm_joint_mask(rig);
+  scratch->prepare(rig);
+  const std::vector<bool>& arm_joints = scratch->arm_joints;
   p->lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p->k = transition_states(p->lmax_m, fps, speed);
   sample(p->k, &p->frames);
@@ -1052,23 +1067,25 @@ void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::qua
   // same walk keeps the acceleration measure's points (arm_accel's positions, the same bits as
   // its own pose of them: SubsetPose), so where the states stay, its first round poses nothing.
   float arm_step_m = 0.0f, finger_step_m = 0.0f;
-  const AccelPoints points = accel_point_list(rig);
+  const AccelPoints& points = scratch->points;
   const size_t n_points = points.joints.size();
-  std::vector<glm::vec3> accel_pos(static_cast<size_t>(p->k + 1) * n_points);
+  std::vector<glm::vec3>& accel_pos = scratch->accel_pos;
+  accel_pos.resize(static_cast<size_t>(p->k + 1) * n_points);
   {
     PoseBuilder pb(rig);
-    std::vector<glm::vec3> prev(J), cur(J);
+    std::vector<glm::vec3>& prev = scratch->prev;
     for (int i = 0; i <= p->k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p->k ? to : &p->frames[static_cast<size_t>(i - 1) * J]);
       for (size_t n = 0; n < n_points; ++n)
         accel_pos[static_cast<size_t>(i) * n_points + n] = points.scale[n] * pb.position(points.joints[n]);
       for (int j = 0; j < J; ++j) {
-        cur[j] = pb.position(j);
-        if (i == 0) continue;
-        float& longest = arm_joints[static_cast<size_t>(j)] ? arm_step_m : finger_step_m;
-        longest = std::max(longest, glm::length(cur[j] - prev[j]));
+        const glm::vec3& cur = pb.position(j);
+        if (i > 0) {
+          float& longest = arm_joints[static_cast<size_t>(j)] ? arm_step_m : finger_step_m;
+          longest = std::max(longest, glm::length(cur - prev[static_cast<size_t>(j)]));
+        }
+        prev[static_cast<size_t>(j)] = cur;
       }
-      std::swap(prev, cur);
     }
   }
   const float peak_step_m = profile_peak_step_m(p->lmax_m, p->k);
@@ -1573,18 +1590,20 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // The hand path's tries already known to be deeper than the ends are not tried again below.
   int hand_try = 0;
   HandPathTrials trials;
+  RestPathScratch rest_scratch;
   const bool hand_path_tried = ctx.options.avoid_collisions && rest_at_start != rest_at_end &&
                                direct.states_exceed(kMinTransitionStates);
   if (hand_path_tried) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, false, &hand_try, &trials, &hand_path))
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, false, &hand_try, &trials,
+                       &hand_path))
       return hand_path;
   }
   auto sample_direct = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, {}, J, k, out); };
   // A rest transition's direct path and via-poses (below) are timed by the arm, as its hand's
   // path is (time_rest_path_by_arm); every other transition by eq. (10) over all joints.
   if (hand_path_tried) {
-    time_rest_path_by_arm(rig, from, to, fps, speed, sample_direct, false, &plan);
+    time_rest_path_by_arm(rig, from, to, fps, speed, sample_direct, false, &rest_scratch, &plan);
   } else {
     plan.lmax_m = direct.length_m();  // transition_path_m
     plan.k = transition_states(plan.lmax_m, fps, speed);
@@ -1624,7 +1643,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // the body, where one is clear (plan_hand_path's retry), before any via-pose.
   if (hand_path_tried) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, true, &hand_try, &trials, &hand_path))
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, true, &hand_try, &trials,
+                       &hand_path))
       return hand_path;
   }
 
@@ -1696,7 +1716,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     auto sample_vias = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, vias, J, k, out, &direct_samples); };
     p.via_points = static_cast<int>(vias.size());
     if (hand_path_tried) {
-      time_rest_path_by_arm(rig, from, to, fps, speed, sample_vias, false, &p);
+      time_rest_path_by_arm(rig, from, to, fps, speed, sample_vias, false, &rest_scratch, &p);
     } else {
       p.lmax_m = path_length(rig, from, to, sample_vias);  // eq. (10) along the routed path
       p.k = transition_states(p.lmax_m, fps, speed);
@@ -1723,7 +1743,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     auto sample = [&](int k, std::vector<glm::quat>* out) { interpolate_chain(rig, from, to, waypoints, k, out); };
     p.via_points = static_cast<int>(vias.size());
     if (hand_path_tried) {
-      time_rest_path_by_arm(rig, from, to, fps, speed, sample, true, &p);
+      time_rest_path_by_arm(rig, from, to, fps, speed, sample, true, &rest_scratch, &p);
       p.exempt = exempt_for(p.k);
       const ExcessBound bound = losing_bound();
       const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound, &deep_tau);
