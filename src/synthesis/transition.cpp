@@ -759,7 +759,48 @@ constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0
 // The tries above without the hands-apart ones: a rest transition whose sign's hands do not touch
 // each other has no use for them.
 constexpr int kHandPathPlainTries = 5;
+constexpr int kHandPathTryCount = static_cast<int>(sizeof kHandPathTries / sizeof kHandPathTries[0]);
 constexpr float kHandPathWideBowFrom_m = 0.20f;
+
+// What one transition's hand-path tries have measured, for its later tries and calls
+// (plan_transition asks plan_hand_path twice and plan_hand_path_least_deep once, each from the
+// tries in order). All of it is the same arithmetic on the same inputs as measuring again, so
+// what is kept is exact:
+// - the end poses' depths (the ceilings of every try, and plan_transition's floors);
+// - each try's waypoints (arm IK solves), which depend only on the ends and the try;
+// - each try's last outcome where it was deeper than its ceilings: its states (k) and the depths
+//   of its last pass, measured only until they passed those ceilings. A try whose waypoints are
+//   the same bits as such a try's (the swivel search returned the interpolated swivel: 20 of the
+//   lexicon's 61 deeper tries) or that try again (plan_hand_path_least_deep) samples the same
+//   states, so its depths are at least those: past this call's ceilings, it is deeper without
+//   measuring (and with the same states a call that stops at "not shorter" stops: see
+//   plan_hand_path_bowed).
+struct HandPathTrials {
+  struct Try {
+    std::vector<std::vector<glm::quat>> waypoints;  // empty until solved
+    bool deeper = false;
+    int k = 0;
+    KindDepths depths;
+  };
+  std::array<Try, kHandPathTryCount> tries;
+  bool has_ends = false;
+  KindDepths ends_from, ends_to;
+  void measure_ends(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, std::uint8_t exempt_from,
+                    std::uint8_t exempt_to) {
+    if (has_ends) return;
+    ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
+    ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
+    has_ends = true;
+  }
+};
+
+bool same_waypoints(const std::vector<std::vector<glm::quat>>& a, const std::vector<std::vector<glm::quat>>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t w = 0; w < a.size(); ++w)
+    if (a[w].size() != b[w].size() || std::memcmp(a[w].data(), b[w].data(), sizeof(glm::quat) * a[w].size()) != 0)
+      return false;
+  return true;
+}
 
 // The frame of the trunk the arms hang from (the upper chest), in one pose of a transition whose
 // ends turn the trunk differently (thorax_turn.h), relative to the rest pose's trunk, in which the
@@ -999,11 +1040,26 @@ std::vector<bool> arm_joint_mask(const Rig& rig) {
 // direct path and the via-poses took 1.2-1.4 s where the hand's path takes 0.7-0.9 (DAY's hands
 // leaving each other for the rest: 1.43 s on the reference humanoid), and the far side's routed
 // pointing touches 3.6-3.8 s. `chain`: a path with corners (stretch_for_arm_accel).
+// `scratch`: the walk's buffers and the rig's joint lists, kept by plan_transition for its many
+// candidates (each of LOVE's 26 via candidates is timed so; allocated per call, they were most of
+// the walk's cost beyond the poses). Filled at the first use.
+struct RestPathScratch {
+  void prepare(const Rig& rig) {
+    if (!prev.empty() || rig.joint_count == 0) return;
+    arm_joints = arm_joint_mask(rig);
+    points = accel_point_list(rig);
+    prev.resize(static_cast<size_t>(rig.joint_count));
+  }
+  std::vector<bool> arm_joints;
+  AccelPoints points;
+  std::vector<glm::vec3> prev, accel_pos;
+};
 template <typename Sampler>
 void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::quat* to, float fps, float speed,
-                           Sampler sample, bool chain, TransitionPlan* p) {
+                           Sampler sample, bool chain, RestPathScratch* scratch, TransitionPlan* p) {
   const int J = rig.joint_count;
-  const std::vector<bool> arm_joints = arm_joint_mask(rig);
+  scratch->prepare(rig);
+  const std::vector<bool>& arm_joints = scratch->arm_joints;
   p->lmax_m = path_length(rig, from, to, sample, &arm_joints);
   p->k = transition_states(p->lmax_m, fps, speed);
   sample(p->k, &p->frames);
@@ -1011,23 +1067,25 @@ void time_rest_path_by_arm(const Rig& rig, const glm::quat* from, const glm::qua
   // same walk keeps the acceleration measure's points (arm_accel's positions, the same bits as
   // its own pose of them: SubsetPose), so where the states stay, its first round poses nothing.
   float arm_step_m = 0.0f, finger_step_m = 0.0f;
-  const AccelPoints points = accel_point_list(rig);
+  const AccelPoints& points = scratch->points;
   const size_t n_points = points.joints.size();
-  std::vector<glm::vec3> accel_pos(static_cast<size_t>(p->k + 1) * n_points);
+  std::vector<glm::vec3>& accel_pos = scratch->accel_pos;
+  accel_pos.resize(static_cast<size_t>(p->k + 1) * n_points);
   {
     PoseBuilder pb(rig);
-    std::vector<glm::vec3> prev(J), cur(J);
+    std::vector<glm::vec3>& prev = scratch->prev;
     for (int i = 0; i <= p->k; ++i) {
       pb.set_from_local(i == 0 ? from : i == p->k ? to : &p->frames[static_cast<size_t>(i - 1) * J]);
       for (size_t n = 0; n < n_points; ++n)
         accel_pos[static_cast<size_t>(i) * n_points + n] = points.scale[n] * pb.position(points.joints[n]);
       for (int j = 0; j < J; ++j) {
-        cur[j] = pb.position(j);
-        if (i == 0) continue;
-        float& longest = arm_joints[static_cast<size_t>(j)] ? arm_step_m : finger_step_m;
-        longest = std::max(longest, glm::length(cur[j] - prev[j]));
+        const glm::vec3& cur = pb.position(j);
+        if (i > 0) {
+          float& longest = arm_joints[static_cast<size_t>(j)] ? arm_step_m : finger_step_m;
+          longest = std::max(longest, glm::length(cur - prev[static_cast<size_t>(j)]));
+        }
+        prev[static_cast<size_t>(j)] = cur;
       }
-      std::swap(prev, cur);
     }
   }
   const float peak_step_m = profile_peak_step_m(p->lmax_m, p->k);
@@ -1224,30 +1282,55 @@ class DirectPathLength {
 // either kind, beyond the end poses' own (0.5 mm): otherwise the direct path and its routing
 // stand, so the collision remedies are unchanged wherever the hand's path is not clear.
 bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
-                          std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, float bow_m,
-                          bool search_swivel, float apart_m, float turn_ahead, bool allow_longer, TransitionPlan* out,
-                          bool* deeper,
+                          std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, int try_index,
+                          HandPathTrials* trials, bool allow_longer, TransitionPlan* out, bool* deeper,
                           float added_m = 0.0005f) {
   *deeper = false;
   const Rig& rig = ctx.rig;
   const int J = rig.joint_count;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
-  std::vector<std::vector<glm::quat>> waypoints(kHandPathWaypoints);
+  const HandPathTry& attempt = kHandPathTries[try_index];
+  HandPathTrials::Try& record = trials->tries[static_cast<size_t>(try_index)];
   std::vector<float> fractions(kHandPathWaypoints);
-  std::array<ArmPose, 2> solved_arms;
+  for (int w = 0; w < kHandPathWaypoints; ++w) fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
   PoseBuilder pf(rig), pt(rig);
   pf.set_from_local(from);
   pt.set_from_local(to);
-  const ThoraxFrame frame_from = thorax_frame(ctx, pf, from, to, from);
-  const ThoraxFrame frame_to = thorax_frame(ctx, pt, from, to, to);
-  const std::array<glm::vec3, 2> apart_dir =
-      apart_m > 0.0f ? hands_apart_dirs(rig, rest_at_start ? pt : pf) : std::array<glm::vec3, 2>{};
-  for (int i = 0; i < kHandPathWaypoints; ++i) {
-    const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
-    fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
-    waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0, bow_m, search_swivel,
-                                      frame_from, frame_to, apart_m, apart_dir, turn_ahead, rest_at_start);
+  if (record.waypoints.empty()) {
+    record.waypoints.resize(kHandPathWaypoints);
+    std::array<ArmPose, 2> solved_arms;
+    const ThoraxFrame frame_from = thorax_frame(ctx, pf, from, to, from);
+    const ThoraxFrame frame_to = thorax_frame(ctx, pt, from, to, to);
+    const std::array<glm::vec3, 2> apart_dir =
+        attempt.apart_m > 0.0f ? hands_apart_dirs(rig, rest_at_start ? pt : pf) : std::array<glm::vec3, 2>{};
+    for (int i = 0; i < kHandPathWaypoints; ++i) {
+      const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
+      record.waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0, attempt.bow_m,
+                                               attempt.search_swivel, frame_from, frame_to, attempt.apart_m, apart_dir,
+                                               attempt.turn_ahead, rest_at_start);
+    }
   }
+  const std::vector<std::vector<glm::quat>>& waypoints = record.waypoints;
+  // What the end poses themselves have: a pass deeper than this, of either kind, is not taken
+  // (`deeper`), so once a pass's depth of one kind exceeds it the rest of its states' checks
+  // cannot change the outcome (depths only grow along the pass) and are skipped.
+  // added_m: 0.5 mm (plan_transition's kNothingAdded_m: sampling), or what the caller still
+  // accepts (plan_hand_path_least_deep).
+  trials->measure_ends(ctx, from, to, exempt_from, exempt_to);
+  const float hand_ceiling_m = std::max(trials->ends_from.hand_m, trials->ends_to.hand_m) + added_m;
+  const float arm_ceiling_m = std::max(trials->ends_from.arm_m, trials->ends_to.arm_m) + added_m;
+  auto is_deeper = [&](const KindDepths& d) { return d.hand_m > hand_ceiling_m || d.arm_m > arm_ceiling_m; };
+  // A try already measured deeper with these waypoints (HandPathTrials): the same states, whose
+  // depths are at least what that measure found. Without allow_longer, this call would stop at
+  // "not shorter" as soon as a k of its passes (they only grow, to the one kept) is not fewer
+  // than the direct path's states; where even the last is fewer, it reaches the same end.
+  for (const HandPathTrials::Try& earlier : trials->tries)
+    if (earlier.deeper && (&earlier == &record || same_waypoints(earlier.waypoints, waypoints)) &&
+        is_deeper(earlier.depths) && (allow_longer || direct->states_exceed(earlier.k))) {
+      *deeper = true;
+      return false;
+    }
+  record.deeper = false;
   const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
   // Eq. (10)'s L_max on the hand's path is the arm's: the longest path of the shoulder girdle,
@@ -1304,16 +1387,6 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   const AccelPoints accel_points = accel_point_list(rig);
   const size_t arms_n = accel_points.joints.size();
   std::vector<glm::vec3> arm_pos;
-  // What the end poses themselves have: a pass deeper than this, of either kind, is not taken
-  // (`deeper`), so once a pass's depth of one kind exceeds it the rest of its states' checks
-  // cannot change the outcome (depths only grow along the pass) and are skipped.
-  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
-  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
-  // added_m: 0.5 mm (plan_transition's kNothingAdded_m: sampling), or what the caller still
-  // accepts (plan_hand_path_least_deep).
-  const float hand_ceiling_m = std::max(ends_from.hand_m, ends_to.hand_m) + added_m;
-  const float arm_ceiling_m = std::max(ends_from.arm_m, ends_to.arm_m) + added_m;
-  auto is_deeper = [&](const KindDepths& d) { return d.hand_m > hand_ceiling_m || d.arm_m > arm_ceiling_m; };
   // The arm-joint mask as bytes (a std::vector<bool> costs a shift and a mask per read) for the
   // step loop below, which reads it for every joint of every state.
   const std::vector<char> arm_joint_bytes(arm_joints.begin(), arm_joints.end());
@@ -1396,6 +1469,9 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   }
   p.via_points = kHandPathWaypoints;
   if (is_deeper(d)) {
+    record.deeper = true;
+    record.k = p.k;
+    record.depths = d;
     *deeper = true;
     return false;
   }
@@ -1413,11 +1489,10 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
 // How many of kHandPathTries a rest transition tries: the hands-apart ones only where the hands
 // meet at the sign (hands_meet_at_sign). Asked only once the plain tries are used up (two poses).
 int hand_path_try_count(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start) {
-  constexpr int kAll = static_cast<int>(sizeof kHandPathTries / sizeof kHandPathTries[0]);
   PoseBuilder pf(ctx.rig), pt(ctx.rig);
   pf.set_from_local(from);
   pt.set_from_local(to);
-  return hands_meet_at_sign(ctx.rig, pf, pt, rest_at_start) ? kAll : kHandPathPlainTries;
+  return hands_meet_at_sign(ctx.rig, pf, pt, rest_at_start) ? kHandPathTryCount : kHandPathPlainTries;
 }
 
 // BOWS_COMMENT
@@ -1432,7 +1507,7 @@ int hand_path_try_count(const SynthContext& ctx, const glm::quat* from, const gl
 // left hip swung out 21 cm to the right at chest height (upper arm abducted 54 deg), 1.90 s.
 bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                     std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct, bool retry,
-                    int* next_try, TransitionPlan* out) {
+                    int* next_try, HandPathTrials* trials, TransitionPlan* out) {
   int tries = kHandPathPlainTries;
   bool counted = false;
   for (;; ++*next_try) {
@@ -1442,10 +1517,9 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
       tries = hand_path_try_count(ctx, from, to, rest_at_start);
       if (*next_try >= tries) break;
     }
-    const HandPathTry& attempt = kHandPathTries[*next_try];
     bool deeper = false;
-    if (plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
-                             attempt.search_swivel, attempt.apart_m, attempt.turn_ahead, retry, out, &deeper))
+    if (plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, *next_try, trials, retry,
+                             out, &deeper))
       return true;
     // Not shorter than the direct path: the later tries, bowed further, are longer still.
     if (!deeper) return false;
@@ -1467,20 +1541,18 @@ bool plan_hand_path(const SynthContext& ctx, const glm::quat* from, const glm::q
 // ceiling), so a try that cannot win stops early. Returns the winner's excess in *excess_m.
 bool plan_hand_path_least_deep(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, bool rest_at_start,
                                std::uint8_t exempt_from, std::uint8_t exempt_to, DirectPathLength* direct,
-                               float within_m, TransitionPlan* out, float* excess_m) {
-  const KindDepths ends_from = depths_by_kind(ctx, from, 1, &exempt_from);
-  const KindDepths ends_to = depths_by_kind(ctx, to, 1, &exempt_to);
-  const float hand_floor_m = std::max(ends_from.hand_m, ends_to.hand_m);
-  const float arm_floor_m = std::max(ends_from.arm_m, ends_to.arm_m);
+                               float within_m, HandPathTrials* trials, TransitionPlan* out, float* excess_m) {
+  trials->measure_ends(ctx, from, to, exempt_from, exempt_to);
+  const float hand_floor_m = std::max(trials->ends_from.hand_m, trials->ends_to.hand_m);
+  const float arm_floor_m = std::max(trials->ends_from.arm_m, trials->ends_to.arm_m);
   bool found = false;
   const int tries = hand_path_try_count(ctx, from, to, rest_at_start);
   for (int n = 0; n < tries; ++n) {
-    const HandPathTry& attempt = kHandPathTries[n];
     if (within_m <= 0.0f) break;
     TransitionPlan p;
     bool deeper = false;
-    if (!plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, attempt.bow_m,
-                              attempt.search_swivel, attempt.apart_m, attempt.turn_ahead, true, &p, &deeper, within_m))
+    if (!plan_hand_path_bowed(ctx, from, to, rest_at_start, exempt_from, exempt_to, direct, n, trials, true, &p,
+                              &deeper, within_m))
       continue;
     const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data());
     const float excess = excess_over(d, hand_floor_m, arm_floor_m);
@@ -1517,18 +1589,21 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   const bool rest_at_end = has_rest && std::memcmp(to, ctx.rest_locals.data(), pose_bytes) == 0;
   // The hand path's tries already known to be deeper than the ends are not tried again below.
   int hand_try = 0;
+  HandPathTrials trials;
+  RestPathScratch rest_scratch;
   const bool hand_path_tried = ctx.options.avoid_collisions && rest_at_start != rest_at_end &&
                                direct.states_exceed(kMinTransitionStates);
   if (hand_path_tried) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, false, &hand_try, &hand_path))
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, false, &hand_try, &trials,
+                       &hand_path))
       return hand_path;
   }
   auto sample_direct = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, {}, J, k, out); };
   // A rest transition's direct path and via-poses (below) are timed by the arm, as its hand's
   // path is (time_rest_path_by_arm); every other transition by eq. (10) over all joints.
   if (hand_path_tried) {
-    time_rest_path_by_arm(rig, from, to, fps, speed, sample_direct, false, &plan);
+    time_rest_path_by_arm(rig, from, to, fps, speed, sample_direct, false, &rest_scratch, &plan);
   } else {
     plan.lmax_m = direct.length_m();  // transition_path_m
     plan.k = transition_states(plan.lmax_m, fps, speed);
@@ -1556,10 +1631,9 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // less deep into each other while putting the forearms 14.6 mm through each other won (SAD's
   // and HAVE's hands rising from the rest, thumbs meeting in front of the face: the forearms at
   // some state counts only, 7-10 mm on the reference humanoid, 5.5 mm on the project avatar).
-  const KindDepths from_depths = depths_by_kind(ctx, from, 1, &exempt_from);
-  const KindDepths to_depths = depths_by_kind(ctx, to, 1, &exempt_to);
-  const float hand_floor_m = std::max(from_depths.hand_m, to_depths.hand_m);
-  const float arm_floor_m = std::max(from_depths.arm_m, to_depths.arm_m);
+  trials.measure_ends(ctx, from, to, exempt_from, exempt_to);
+  const float hand_floor_m = std::max(trials.ends_from.hand_m, trials.ends_to.hand_m);
+  const float arm_floor_m = std::max(trials.ends_from.arm_m, trials.ends_to.arm_m);
   auto excess_of = [&](const KindDepths& d) { return excess_over(d, hand_floor_m, arm_floor_m); };
   constexpr float kNothingAdded_m = 0.0005f;
   const KindDepths direct_depths = depths_by_kind(ctx, plan.frames.data(), plan.k - 1, plan.exempt.data());
@@ -1569,7 +1643,8 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
   // the body, where one is clear (plan_hand_path's retry), before any via-pose.
   if (hand_path_tried) {
     TransitionPlan hand_path;
-    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, true, &hand_try, &hand_path))
+    if (plan_hand_path(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, true, &hand_try, &trials,
+                       &hand_path))
       return hand_path;
   }
 
@@ -1641,7 +1716,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     auto sample_vias = [&](int k, std::vector<glm::quat>* out) { interpolate(from, to, vias, J, k, out, &direct_samples); };
     p.via_points = static_cast<int>(vias.size());
     if (hand_path_tried) {
-      time_rest_path_by_arm(rig, from, to, fps, speed, sample_vias, false, &p);
+      time_rest_path_by_arm(rig, from, to, fps, speed, sample_vias, false, &rest_scratch, &p);
     } else {
       p.lmax_m = path_length(rig, from, to, sample_vias);  // eq. (10) along the routed path
       p.k = transition_states(p.lmax_m, fps, speed);
@@ -1668,7 +1743,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     auto sample = [&](int k, std::vector<glm::quat>* out) { interpolate_chain(rig, from, to, waypoints, k, out); };
     p.via_points = static_cast<int>(vias.size());
     if (hand_path_tried) {
-      time_rest_path_by_arm(rig, from, to, fps, speed, sample, true, &p);
+      time_rest_path_by_arm(rig, from, to, fps, speed, sample, true, &rest_scratch, &p);
       p.exempt = exempt_for(p.k);
       const ExcessBound bound = losing_bound();
       const KindDepths d = depths_by_kind(ctx, p.frames.data(), p.k - 1, p.exempt.data(), &bound, &deep_tau);
@@ -1812,7 +1887,7 @@ TransitionPlan plan_transition(const SynthContext& ctx, const glm::quat* from, c
     TransitionPlan hand_path;
     float excess = 0.0f;
     if (plan_hand_path_least_deep(ctx, from, to, rest_at_start, exempt_from, exempt_to, &direct, best_excess - 1e-4f,
-                                  &hand_path, &excess))
+                                  &trials, &hand_path, &excess))
       return hand_path;
     return best;
   };
