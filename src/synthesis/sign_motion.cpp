@@ -192,6 +192,9 @@ struct HandPlan {
   int place_finger = 1;
   float place_distance_m = 0.0f;
   bool exempt_trunk = false, exempt_hand = false;
+  // The notation says this hand stays (hamplus hamnomotion, <nomotion/>) and it has no movement
+  // in any step: the frames keep it where it is (holds_still_while_the_other_moves).
+  bool written_still = false;
   std::vector<std::vector<Movement>> steps;
 };
 
@@ -1331,6 +1334,10 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
     n.steps.push_back(sign.nondominant_is_place ? std::vector<Movement>{} : nd);
     for (const auto& m : step.dominant) n.alternating = n.alternating || m.alternating;
   }
+  bool stays_said = false, moves = false;
+  for (const auto& step : sign.movements) stays_said = stays_said || step.nondominant_stays;
+  for (const auto& step : n.steps) moves = moves || !step.empty();
+  n.written_still = n.active && stays_said && !moves;
   for (auto& p : plans) {
     const Location& loc = p.spec.location;
     if (loc.kind == Location::Kind::OtherHand) {
@@ -1354,6 +1361,23 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
       moves_to_the_other_hand(plans[1]))
     plans[0].exempt_hand = plans[1].exempt_hand = true;
   return plans;
+}
+
+// The hand solved second gives way to the first (the per-frame pushes out of the other hand and
+// forearm, then clear_arm's swivel fix), and its corrections are ramped in over the frames
+// around. A hand the notation keeps still (HamNoSys `hamplus hamnomotion`, G-SiGML <nomotion/>,
+// and no movement of its own in any step) was the one that gave way to the dominant hand moving
+// past it: the flat hands palm down at the chest, the right one moving up beside the left, moved
+// the left wrist 105 mm and its elbow 219 mm on the reference humanoid for a 14 mm overlap of the
+// hands. The moving hand goes round it instead. Only where the notation says so: for every
+// non-dominant hand without a movement of its own the corpus's procent (the left hand held in
+// neutral space, the right forearm sweeping down across it) went 1.5 -> 41.4 mm, the moving
+// forearm cannot clear the hand its pushes leave in it (docs/SYNTHESIS.md, ref-drift).
+bool holds_still_while_the_other_moves(const HandPlan& still, const HandPlan& moving) {
+  if (!still.written_still || !moving.active || still.on_other_hand) return false;
+  for (const auto& step : moving.steps)
+    if (!step.empty()) return true;
+  return false;
 }
 
 // Whether a place on a hand or arm moves with the hand alone: the arm's places (forearm,
@@ -1605,9 +1629,11 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   const std::vector<ThoraxTurn> body_turns = far_side_turns(ctx, plans);
   // Solve order: a hand that is the place of the other goes first.
   std::array<int, 2> order = {0, 1};
-  // So does the other arm of a hand that moves to a place on it (arm_place, below).
+  // So does the other arm of a hand that moves to a place on it (arm_place, below), and a hand
+  // the notation keeps still while the other moves.
   if (plans[0].on_other_hand ||
-      (presents_the_arm(plans[0]) && plans[1].active && !plans[1].on_other_hand))
+      (presents_the_arm(plans[0]) && plans[1].active && !plans[1].on_other_hand) ||
+      holds_still_while_the_other_moves(plans[1], plans[0]))
     order = {1, 0};
 
   // Key states.

@@ -687,22 +687,36 @@ TEST(SynthesisMovementTwoHands, HandsPartedBeforeTheShouldersKeepTheElbowOutAtTh
 // non-dominant hand holds its place during the step. The readers kept no mark of the other hand's
 // "no motion", so the symmetry copied the dominant's movement to it and both hands moved (the NGT
 // HANDENARBEID, 63 HamNoSys corpus signs such as PEACE2A and długo).
+// The palms down as well as facing: the flat hands palm down side by side at the chest are laid
+// apart at the key pose (the thumbs in each other), the right hand below the left, and its move
+// up brushes the left hand (14 mm). The still hand gave way to it, frame by frame, ramped over the
+// sign: the left wrist moved 105 mm and its elbow 219 mm on the reference humanoid. The hand the
+// notation keeps still is now solved first and the moving hand goes round it.
 TEST(SynthesisMovementTwoHands, TheHandWrittenWithNoMotionInASplitStepStaysWhereItIs) {
-  const std::vector<notation::SignParse> hamnosys = notation::parse_hamnosys_text(
-      "hamsymmlr,hamflathand,hamextfingero,hampalml,hamchest,hamparbegin,hammoveu,hamplus,"
-      "hamnomotion,hamparend");
-  const std::vector<notation::SignParse> gsigml = notation::parse_sigml_text(
-      "<sigml><hamgestural_sign gloss=\"STAYS\"><sign_manual both_hands=\"true\" lr_symm=\"true\">"
-      "<handconfig handshape=\"flat\" extfidir=\"o\" palmor=\"l\"/><location_bodyarm location=\"chest\"/>"
-      "<split_motion><directedmotion direction=\"u\"/><nomotion/></split_motion>"
-      "</sign_manual></hamgestural_sign></sigml>");
+  std::vector<std::pair<std::string, std::vector<notation::SignParse>>> reads;
+  for (const char* palm : {"l", "d"}) {
+    reads.emplace_back(std::string("HamNoSys, palm ") + palm,
+                       notation::parse_hamnosys_text(
+                           std::string("hamsymmlr,hamflathand,hamextfingero,hampalm") + palm +
+                           ",hamchest,hamparbegin,hammoveu,hamplus,hamnomotion,hamparend"));
+    reads.emplace_back(
+        std::string("G-SiGML, palm ") + palm,
+        notation::parse_sigml_text(
+            std::string(
+                "<sigml><hamgestural_sign gloss=\"STAYS\"><sign_manual both_hands=\"true\" "
+                "lr_symm=\"true\"><handconfig handshape=\"flat\" extfidir=\"o\" palmor=\"") +
+            palm +
+            "\"/><location_bodyarm location=\"chest\"/><split_motion><directedmotion "
+            "direction=\"u\"/>"
+            "<nomotion/></split_motion></sign_manual></hamgestural_sign></sigml>"));
+  }
   std::string error;
   const NamedRigs rigs = reference_and_project_avatar(&error);
   ASSERT_TRUE(error.empty()) << error;
-  for (const auto* read : {&hamnosys, &gsigml}) {
-    ASSERT_EQ(read->size(), 1u);
-    ASSERT_TRUE((*read)[0].ok() && (*read)[0].spec);
-    const std::string notation = read == &hamnosys ? "HamNoSys" : "G-SiGML";
+  for (const auto& [notation, parsed] : reads) {
+    const auto* read = &parsed;
+    ASSERT_EQ(read->size(), 1u) << notation;
+    ASSERT_TRUE((*read)[0].ok() && (*read)[0].spec) << notation;
     for (const auto& [name, av] : rigs) {
       Rig rig;
       ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
@@ -712,15 +726,22 @@ TEST(SynthesisMovementTwoHands, TheHandWrittenWithNoMotionInASplitStepStaysWhere
       const PoseBuilder start = frame_pose(rig, r.clip, first);
       const glm::vec3 left_start = start.position(rig.arms[kLeft].hand);
       const glm::vec3 right_start = start.position(rig.arms[kRight].hand);
-      float left_most_m = 0.0f, right_most_m = 0.0f;
+      const glm::vec3 elbow_start = posed_arm(start, kLeft).elbow;
+      float left_most_m = 0.0f, right_most_m = 0.0f, elbow_most_m = 0.0f;
       for (int f = first; f <= last_sign_frame(r.clip); ++f) {
         const PoseBuilder pb = frame_pose(rig, r.clip, f);
         left_most_m = std::max(left_most_m, glm::length(pb.position(rig.arms[kLeft].hand) - left_start));
         right_most_m = std::max(right_most_m, glm::length(pb.position(rig.arms[kRight].hand) - right_start));
+        elbow_most_m =
+            std::max(elbow_most_m, glm::length(posed_arm(pb, kLeft).elbow - elbow_start));
       }
       EXPECT_GT(right_most_m, 0.5f * movement_size_m(rig, notation::Size::Normal)) << notation << ", " << name;
+      // Measured: 0.0 mm (wrist and elbow) on both rigs, both palms; before, palm down on the
+      // reference humanoid, the wrist 105 mm and the elbow 219 mm.
       EXPECT_LT(left_most_m, 0.005f) << notation << ", " << name << ": the left wrist moved "
                                      << left_most_m * 1000.0f << " mm";
+      EXPECT_LT(elbow_most_m, 0.005f) << notation << ", " << name << ": the left elbow moved "
+                                      << elbow_most_m * 1000.0f << " mm";
     }
   }
 }
