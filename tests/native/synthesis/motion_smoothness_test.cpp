@@ -21,6 +21,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "arm_depths.h"
+#include "synthesis/clip_steps.h"
 #include "synthesis/collision.h"
 #include "synthesis/phrase_text.h"
 #include "synthesis/reference_humanoid.h"
@@ -28,7 +30,6 @@
 #include "synthesis/sign_motion.h"
 #include "synthesis/signing_avatar.h"
 #include "synthesis/synthesize.h"
-#include "arm_depths.h"
 #include "synthesis_fixture.h"
 
 namespace sw::synthesis {
@@ -54,66 +55,11 @@ SynthesisOptions from_key_pose() {
   return o;
 }
 
-struct Worst {
-  float step_m = 0.0f, change_m = 0.0f;
-  std::string step_what, change_what;
-};
-
-// What `measure` follows: the wrists and elbows of both arms, their fingertips too, or only the
-// fingertips.
-enum class Track { Arms, ArmsAndFingertips, Fingertips };
-
-// Tracks the chosen points of both arms through frames first..last of a clip (last < 0: to its
-// end).
+// The per-frame steps of the tracked points (synthesis/clip_steps.h).
+using Worst = FrameSteps;
+using Track = StepTrack;
 Worst measure(const Rig& rig, const Clip& clip, int first = 0, int last = -1, Track track = Track::Arms) {
-  const bool arms = track != Track::Fingertips, tips = track != Track::Arms;
-  Worst w;
-  PoseBuilder pb(rig);
-  const int J = rig.joint_count;
-  const char* side_names[2] = {"left", "right"};
-  const char* finger_names[5] = {"thumb", "index", "middle", "ring", "little"};
-  std::vector<glm::vec3> prev, cur, prev_step;
-  std::vector<std::string> names;
-  for (Side s : {kLeft, kRight}) {
-    if (arms) {
-      names.push_back(std::string(side_names[s]) + " wrist");
-      names.push_back(std::string(side_names[s]) + " elbow");
-    }
-    for (int k = 0; tips && k < 5; ++k) names.push_back(std::string(side_names[s]) + " " + finger_names[k] + " tip");
-  }
-  if (last < 0 || last >= clip.frame_count) last = clip.frame_count - 1;
-  for (int f = first; f <= last; ++f) {
-    pb.set_from_local(&clip.rotations[static_cast<size_t>(f) * J]);
-    cur.clear();
-    for (Side s : {kLeft, kRight}) {
-      if (arms) {
-        cur.push_back(pb.position(rig.arms[s].hand));
-        cur.push_back(pb.position(rig.arms[s].lower));
-      }
-      for (int k = 0; tips && k < 5; ++k) cur.push_back(pb.tip(s, k));
-    }
-    if (f > first) {
-      std::vector<glm::vec3> step(cur.size());
-      for (size_t k = 0; k < cur.size(); ++k) {
-        step[k] = cur[k] - prev[k];
-        float d = glm::length(step[k]);
-        if (d > w.step_m) {
-          w.step_m = d;
-          w.step_what = names[k] + " at frame " + std::to_string(f);
-        }
-        if (f > first + 1) {
-          float c = glm::length(step[k] - prev_step[k]);
-          if (c > w.change_m) {
-            w.change_m = c;
-            w.change_what = names[k] + " at frame " + std::to_string(f);
-          }
-        }
-      }
-      prev_step = step;
-    }
-    prev = cur;
-  }
-  return w;
+  return measure_frame_steps(rig, clip, first, last, track);
 }
 
 // Bounds in millimetres: per-frame step, change of the step.
