@@ -261,10 +261,26 @@ Penetration hand_penetration(const BodyModel& body, const PoseBuilder& pose, Sid
       float their_bound = 0.0f;
       for (int j = 0; j < m; ++j)
         their_bound = std::max(their_bound, glm::length(theirs[j].c - their_centre) + theirs[j].r);
+      bool from_other_hand = false;
       for (int i = 0; i < n; ++i) {
         if (glm::length(mine[i].c - their_centre) > their_bound + mine[i].r + 1e-4f) continue;
-        for (int j = 0; j < m; ++j) consider(mine[i], theirs[j].c, theirs[j].c, theirs[j].r, "other hand");
+        for (int j = 0; j < m; ++j) {
+          float before = worst.depth_m;
+          consider(mine[i], theirs[j].c, theirs[j].c, theirs[j].r, "other hand");
+          if (worst.depth_m > before) from_other_hand = true;
+        }
       }
+      // Hands side by side (their centres farther apart than kSideBySide times their mean
+      // bounding radius) are parted along the line between their centres: the worst sphere
+      // pair's direction jumps from one pair to the next as the hands interleave (fingers past
+      // fingers), so successive pushes zig-zag and a hand walks far for a small overlap. Hands
+      // closer than that are interlocked or one inside the other's curl, where the centre line
+      // does not part them and the worst pair's direction does. 1.1 is measured, not derived
+      // (docs/SYNTHESIS.md, centre-push: 1.0 made more signs 20 mm deep, 1.15-1.3 fewer shallower).
+      constexpr float kSideBySide = 1.1f;
+      if (from_other_hand &&
+          glm::length(centre - their_centre) > kSideBySide * 0.5f * (bound + their_bound))
+        worst.push_dir = safe_normalize(centre - their_centre, worst.push_dir);
     }
   }
   return worst;

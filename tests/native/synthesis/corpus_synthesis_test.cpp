@@ -181,8 +181,10 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
 TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   const CorpusSample& s = corpus_sample();
   if (!s.skip.empty()) GTEST_SKIP() << s.skip;
-  // The sample's measured figures, every 2nd clean sign: 2,236 synthesised, 108 over 5 mm
-  // (4.8 %), deepest 119 mm (szkoła), after other-hand and trunk-depth merged. Before: 110
+  // The sample's measured figures, every 2nd clean sign: 2,237 synthesised, 95 over 5 mm
+  // (4.2 %), deepest 77 mm (ratować), after centre-push (hands side by side parted along the line
+  // between their centres); 114 (5.1 %) before it. 108 (4.8 %), deepest 119 mm (szkoła), after
+  // other-hand and trunk-depth merged. Before: 110
   // (4.9 %), deepest 129 mm, with other-hand alone (a path that ends on the other hand ends there;
   // a one-handed sign on the other arm presents that arm); 113 (5.1 %), deepest 119 mm (szkoła),
   // with trunk-depth alone (a symmetric pair's sides, same_side_pair and mirrored_place; one
@@ -194,7 +196,7 @@ TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   // that adds least); 208 (9.4 %) of 2,217 before the HamNoSys reader read the bracketed contact
   // part after a place as that (hamnosys_parser.cpp, read_contact_bracket); 21 % of all signs
   // before corpus-depth.
-  constexpr float kMeasuredShareOver5mm = 0.048f;
+  constexpr float kMeasuredShareOver5mm = 0.042f;
   constexpr float kMeasuredDeepest_m = 0.119f;
 
   int synthesised = 0, over = 0;

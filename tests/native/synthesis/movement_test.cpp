@@ -746,5 +746,26 @@ TEST(SynthesisMovementTwoHands, TheHandWrittenWithNoMotionInASplitStepStaysWhere
   }
 }
 
+// Two hands side by side whose fingers overlap (both hands bent, palms facing, closing in): the
+// push out of the other hand follows the line between the hands' centres. The worst sphere
+// pair's direction changes from one finger pair to the next, and its pushes left the hands 10 mm
+// in each other (corpus TO-ARGUE2A^, written here by hand).
+TEST(SynthesisMovementTwoHands, SideBySideHandsArePartedAlongTheLineBetweenTheirCentres) {
+  notation::SignSpec spec;
+  ASSERT_TRUE(read_one_hamnosys("hamsymmlr,hamfinger2345,hamthumboutmod,hamfingerbendmod,hamthumb,"
+                                "hamextfingerul,hampalml,hammovel,hamsmallmod,hamtouch,"
+                                "hamrepeatfromstart",
+                                &spec));
+  std::string error;
+  const NamedRigs rigs = reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  for (const auto& [name, av] : rigs) {
+    const SynthesisResult r = synthesize_sign(spec, av);
+    ASSERT_TRUE(r.ok()) << name;
+    EXPECT_LE(r.report.max_penetration_m, 0.005f)
+        << name << ": " << (r.report.warnings.empty() ? "" : r.report.warnings.back());
+  }
+}
+
 }  // namespace
 }  // namespace sw::synthesis
