@@ -1495,7 +1495,6 @@ int hand_path_try_count(const SynthContext& ctx, const glm::quat* from, const gl
   return hands_meet_at_sign(ctx.rig, pf, pt, rest_at_start) ? kHandPathTryCount : kHandPathPlainTries;
 }
 
-// BOWS_COMMENT
 // The hand's path of a rest transition (plan_hand_path_bowed) through kHandPathTries in order,
 // from `*next_try`: the first that adds no depth beyond the end poses is taken when it takes fewer
 // states than the direct path, or, with `retry` (the direct path is not clear of the body and
