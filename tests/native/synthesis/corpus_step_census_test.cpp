@@ -1,9 +1,11 @@
 // Diagnostic, not a check (docs/SYNTHESIS.md, step-census): with SIGNWEAVE_STEP_CENSUS=1, every
 // corpus sign whose largest arm step (clip_steps.h, the measure `signweave-cli check` reports) is
 // over SIGNWEAVE_STEP_CENSUS_MIN_MM (default 100) is listed with where that step is and what made
-// it. Where: the phase (rest-in / rest-out transition, the sign's first frame, inside the sign with
-// the frame's offset and the sign's movement kinds). What, for the arm that steps:
-// - "wrist": the wrist itself moves more than half the step (the target jumped);
+// it. Where: the phase (rest-in: a step arriving at the sign's first frame or before it; rest-out;
+// else inside the sign, with the frame's offset and the sign's movement kinds). What, for the arm
+// that steps:
+// - "wrist": the wrist itself moves more than half the step (its target moved, or the hand turned
+//   about its contact point);
 // - "zero-turn": the elbow swings with the wrist nearly still and the swivel's zero (arm_ik.cpp
 //   solve_chain: the lateral direction square to the shoulder-wrist line and the way down) turned
 //   by 0.5 rad or more between the frames, more than the swivel number read in each frame's own
@@ -12,8 +14,10 @@
 // - "reach": neither (the elbow moves with the shoulder-wrist distance, the clavicle or the trunk).
 // And which stage: the same sign synthesised without collision avoidance (no body in the swivel
 // choice, no per-frame clearing, pushes or via points): its largest step over the whole clip (and
-// at that frame where the frame counts agree; they mostly do not, avoidance times transitions); whether the trunk (thorax turn) moves at that frame; whether the arm
-// is a hand placed on the other hand. SIGNWEAVE_STEP_CENSUS_ONLY=<gloss> lists one sign's frames.
+// at that frame where the frame counts agree; they mostly do not, avoidance times transitions);
+// whether the trunk (thorax turn) moves at that frame; whether the arm is a hand placed on the
+// other hand. SIGNWEAVE_STEP_CENSUS_ONLY=<gloss> lists one sign's frames;
+// SIGNWEAVE_STEP_CENSUS_FILE=<jsonl> reads another file with a "hamnosys" field.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,20 +78,34 @@ float angle_between(float a, float b) {
 const char* kind_name(notation::MovementKind k) {
   using K = notation::MovementKind;
   switch (k) {
-    case K::Straight: return "straight";
-    case K::Arc: return "arc";
-    case K::Circle: return "circle";
-    case K::Ellipse: return "ellipse";
-    case K::Wavy: return "wavy";
-    case K::Zigzag: return "zigzag";
-    case K::Spiral: return "spiral";
-    case K::FingerPlay: return "fingerplay";
-    case K::WristNod: return "nod";
-    case K::WristSwing: return "swing";
-    case K::WristTwist: return "twist";
-    case K::WristCircle: return "wcircle";
-    case K::Replace: return "replace";
-    case K::Target: return "target";
+    case K::Straight:
+      return "straight";
+    case K::Arc:
+      return "arc";
+    case K::Circle:
+      return "circle";
+    case K::Ellipse:
+      return "ellipse";
+    case K::Wavy:
+      return "wavy";
+    case K::Zigzag:
+      return "zigzag";
+    case K::Spiral:
+      return "spiral";
+    case K::FingerPlay:
+      return "fingerplay";
+    case K::WristNod:
+      return "nod";
+    case K::WristSwing:
+      return "swing";
+    case K::WristTwist:
+      return "twist";
+    case K::WristCircle:
+      return "wcircle";
+    case K::Replace:
+      return "replace";
+    case K::Target:
+      return "target";
   }
   return "?";
 }
@@ -192,7 +210,8 @@ TEST(CorpusStepCensus, ListsLargeArmStepsByCause) {
       stage = bare_step <= 0.1f ? (bare_all.step_m <= 0.1f ? "collision" : "collision*")
                                 : "not-collision";
       char buf[64];
-      std::snprintf(buf, sizeof buf, " bare %.0f/%.0f", bare_step * 1000.0f, bare_all.step_m * 1000.0f);
+      std::snprintf(buf, sizeof buf, " bare %.0f/%.0f", bare_step * 1000.0f,
+                    bare_all.step_m * 1000.0f);
       stage += buf;
     } else if (bare.ok()) {
       // Avoidance changes the frame count (via points): the bare clip's largest step only.
@@ -209,24 +228,24 @@ TEST(CorpusStepCensus, ListsLargeArmStepsByCause) {
     if (hs && hs->location.kind == notation::Location::Kind::OtherHand) placed = " placed";
     std::string kinds;
     for (const notation::MovementStep& ms : spec.movements)
-      for (const notation::Movement& m : side == kRight || ms.nondominant.empty() ? ms.dominant
-                                                                                 : ms.nondominant)
+      for (const notation::Movement& m :
+           side == kRight || ms.nondominant.empty() ? ms.dominant : ms.nondominant)
         kinds += std::string(kinds.empty() ? "" : ",") + kind_name(m.kind);
     ++by_cause[what + " " + phase.substr(0, phase.find('+'))];
     ++listed;
     std::printf(
         "STEP %-24s %5.0f mm %-22s %-9s %-9s wrist %3.0f elbow %3.0f shoulder %3.0f mm | number "
         "%+.2f -> %+.2f, zero turned %.2f | %s | trunk %.3f rad%s | moves %s | depth %.1f\n",
-        gloss.substr(0, 24).c_str(), steps.step_m * 1000.0f, steps.step_what.c_str(),
-        phase.c_str(), what.c_str(), wrist_step * 1000.0f, elbow_step * 1000.0f,
-        shoulder_step * 1000.0f, n0, n1, zero_turn, stage.c_str(), trunk_turn, placed.c_str(),
-        kinds.empty() ? "-" : kinds.c_str(), r.report.max_penetration_m * 1000.0f);
+        gloss.substr(0, 24).c_str(), steps.step_m * 1000.0f, steps.step_what.c_str(), phase.c_str(),
+        what.c_str(), wrist_step * 1000.0f, elbow_step * 1000.0f, shoulder_step * 1000.0f, n0, n1,
+        zero_turn, stage.c_str(), trunk_turn, placed.c_str(), kinds.empty() ? "-" : kinds.c_str(),
+        r.report.max_penetration_m * 1000.0f);
     if (only)
       for (int g = 0; g < c.frame_count; ++g) {
         pb.set_from_local(&c.rotations[static_cast<size_t>(g) * J]);
         const ArmSegments a = posed_arm(pb, side);
-        std::printf("  f%3d s(%.3f %.3f %.3f) e(%.3f %.3f %.3f) w(%.3f %.3f %.3f) number %+.2f\n", g,
-                    a.shoulder.x, a.shoulder.y, a.shoulder.z, a.elbow.x, a.elbow.y, a.elbow.z,
+        std::printf("  f%3d s(%.3f %.3f %.3f) e(%.3f %.3f %.3f) w(%.3f %.3f %.3f) number %+.2f\n",
+                    g, a.shoulder.x, a.shoulder.y, a.shoulder.z, a.elbow.x, a.elbow.y, a.elbow.z,
                     a.wrist.x, a.wrist.y, a.wrist.z, swivel_number(rig, side, a, a.wrist));
       }
   }
