@@ -7,6 +7,7 @@
 
 #include "face/face_track.h"
 #include "skeleton/humanoid_names.h"
+#include "synthesis/elbow_path.h"
 #include "synthesis/sign_motion.h"
 #include "synthesis/transition.h"
 
@@ -172,6 +173,10 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
   clip.frame_count = tl.count();
   clip.joint_names = rig.names;
   clip.rotations = std::move(tl.frames);
+  // Every stage above interpolates swivel numbers, whose zero turns half round for a wrist across
+  // the body at the shoulder joint's coronal plane: the elbow's path is made continuous here, on
+  // the whole clip (signs, transitions and holds), before the penetration check measures it.
+  continue_elbow_paths(rig, &ctx.body, fps, clip.frame_count, &clip.rotations);
   clip.root_translation.assign(clip.frame_count, rig.root_translation);
   if (options.face) {
     // The face layer after the body: head gestures and gaze ride on the synthesised neck.

@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "arm_depths.h"
+#include "notation/hamnosys.h"
 #include "synthesis/clip_steps.h"
 #include "synthesis/collision.h"
 #include "synthesis/phrase_text.h"
@@ -744,6 +745,26 @@ TEST_P(MotionSmoothness, AHandTurnedHalfRoundInPlaceOverTheShoulderMovesItsElbow
       phrase_from_text("R(H(pinchall, bent), E(i), P(d), Loc(forehead, centre, touch), M(replace, H(flat), E(o), P(d)))", {});
   ASSERT_TRUE(t.ok());
   SynthesisResult r = synth.phrase(t.items, from_key_pose());
+  ASSERT_TRUE(r.ok());
+  const Worst w = measure(rig_, r.clip);
+  expect_smooth(GetParam(), w, Bound{});
+  RecordProperty("worst_step_mm", std::to_string(w.step_m * 1000.0f) + " " + w.step_what);
+  RecordProperty("worst_change_mm", std::to_string(w.change_m * 1000.0f) + " " + w.change_what);
+}
+
+// A bent index at the ear, pointing up and out, that arcs down while it turns in and up (the
+// HamNoSys corpus's HEARING-AID1^, whole, from the rest pose and back). At the turn the wrist sits
+// at the shoulder joint's coronal plane, where the swivel's zero (arm_ik.cpp solve_chain) turns
+// half round: the frames' swivel numbers put the project avatar's right elbow on the other side of
+// its circle in one frame, 486 mm (a change of step of 524 mm). The elbow is now carried round its
+// circle over several frames (elbow_path.h), the wrist's path unchanged: 70 / 51 mm.
+TEST_P(MotionSmoothness, AFingerAtTheEarArcingDownWhileItTurnsCarriesTheElbowRoundItsCircle) {
+  const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(
+      "hamfinger2,hamfingerbendmod,hamextfingeruo,hampalmdl,hamear,hamlrat,hamclose,hamparbegin,hammoved,hamsmallmod,"
+      "hamarcd,hamsmallmod,hamreplace,hamextfingerui,hampalmul,hamparend");
+  ASSERT_EQ(read.size(), 1u);
+  ASSERT_TRUE(read[0].ok() && read[0].spec);
+  const SynthesisResult r = synthesize_sign(*read[0].spec, avatar_, SynthesisOptions{});
   ASSERT_TRUE(r.ok());
   const Worst w = measure(rig_, r.clip);
   expect_smooth(GetParam(), w, Bound{});

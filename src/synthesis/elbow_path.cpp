@@ -1,0 +1,346 @@
+#include "synthesis/elbow_path.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sw::synthesis {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+// A swing of the elbow about the shoulder-wrist line (the part of its step the wrist's and the
+// shoulder's motion do not explain) faster than this starts the continued path. The lexicon's
+// largest step of an elbow, swing and carry together, is 68 mm at 30 fps (2.0 m/s).
+constexpr float kSwingTriggerMPerS = 2.4f;
+// The continued swing's speed and acceleration along the elbow's circle: within the smoothness
+// tests' bounds (100 mm a frame, a change of step of 56 mm at 30 fps) with room for the wrist's
+// own motion in the same frames.
+constexpr float kSwingMaxMPerS = 1.8f;
+constexpr float kSwingMaxAccelMPerS2 = 22.5f;
+// An arm this close to straight has no circle to swing the elbow round.
+constexpr float kMinRadiusM = 0.02f;
+// The smoothness tests' bounds (100 mm a frame, a change of step of 56 mm, at 30 fps).
+constexpr float kStepBoundMPerS = 3.0f;
+constexpr float kChangeBoundMPerS2 = 50.4f;
+// The way round is judged at this many points, and the longer taken only when it is this much
+// shallower.
+constexpr int kRouteSamples = 8;
+constexpr float kRouteMarginM = 0.01f;
+// A continued path is kept only when the arm stays within this of the clip's own deepest, or
+// within the 5 mm rule's 4 mm where the clip was shallower.
+constexpr float kFreeDepthM = 0.004f;
+constexpr float kDeeperToleranceM = 0.001f;
+
+float wrap_angle(float a) {  // to [-pi, pi)
+  return a - 2.0f * kPi * std::floor((a + kPi) / (2.0f * kPi));
+}
+
+// One arm's continued path: the elbow held from the previous frame and the swing still to go.
+struct ArmPath {
+  bool has_previous = false;
+  glm::vec3 previous_elbow{0.0f};
+  bool active = false;
+  // The rotation about the shoulder-wrist line still to go to the frame's own elbow, and the last
+  // frame's swing.
+  float remaining_rad = 0.0f;
+  float rate_rad = 0.0f;
+};
+
+// The upper arm and forearm turned by `turn` (model space) about the line through the shoulder
+// joint and the wrist, `posed` the frame as it was: the wrist on the line stays, and the hand keeps
+// its rotation in space (its local rotation takes the turn back). rig.h local_rotations' formula,
+// local = L_j * R_j^-1 * D_parent^-1 * D_j * R_j, with the upper arm's and the forearm's deltas
+// turned; the joints between them keep their local rotations.
+void turn_arm(const Rig& rig, const ArmRig& arm, const glm::quat& turn, const PoseBuilder& posed,
+              glm::quat* local) {
+  const int up = arm.upper, hand = arm.hand, forearm = rig.parent[hand];
+  const glm::quat du = posed.delta(up), dpu = posed.delta(rig.parent[up]);
+  local[up] = glm::normalize(rig.bind_local_rot[up] * glm::conjugate(rig.bind_rot[up]) *
+                             glm::conjugate(dpu) * turn * du * rig.bind_rot[up]);
+  const glm::quat dh = posed.delta(hand), dpf = turn * posed.delta(forearm);
+  local[hand] = glm::normalize(rig.bind_local_rot[hand] * glm::conjugate(rig.bind_rot[hand]) *
+                               glm::conjugate(dpf) * dh * rig.bind_rot[hand]);
+}
+
+// How far `side`'s elbow is from the smoothness bounds over the clip: the larger of its largest
+// per-frame step against 3 m/s and its largest change of step against 50 m/s^2 (the smoothness
+// tests' 100 mm and 56 mm at 30 fps), 1 on a bound.
+float elbow_roughness(const Rig& rig, Side side, float fps, int frame_count,
+                      const std::vector<glm::quat>& rotations) {
+  PoseBuilder pb(rig);
+  float step = 0.0f, change = 0.0f;
+  glm::vec3 previous{0.0f}, previous_step{0.0f};
+  for (int f = 0; f < frame_count; ++f) {
+    pb.set_from_local(&rotations[static_cast<size_t>(f) * rig.joint_count]);
+    const glm::vec3 elbow = pb.position(rig.arms[side].lower);
+    if (f > 0) {
+      const glm::vec3 d = elbow - previous;
+      step = std::max(step, glm::length(d));
+      if (f > 1) change = std::max(change, glm::length(d - previous_step));
+      previous_step = d;
+    }
+    previous = elbow;
+  }
+  return std::max(step * fps / kStepBoundMPerS, change * fps * fps / kChangeBoundMPerS2);
+}
+
+// The deepest the arm goes into the trunk (its bind pose) on the elbow's way from `from` round
+// the shoulder-wrist line by `angle`, the wrist held.
+float route_depth(const BodyModel& body, Side s, const glm::vec3& shoulder, const glm::vec3& from,
+                  const glm::vec3& wrist, const glm::vec3& axis, float angle) {
+  float deepest = 0.0f;
+  for (int k = 1; k <= kRouteSamples; ++k) {
+    const glm::quat turn = glm::angleAxis(angle * static_cast<float>(k) / kRouteSamples, axis);
+    ArmSegments arm;
+    arm.shoulder = shoulder;
+    arm.elbow = shoulder + turn * (from - shoulder);
+    arm.wrist = wrist;
+    deepest = std::max(deepest, arm_trunk_depth(body, s, arm, true));
+  }
+  return deepest;
+}
+
+// One arm's pass over the frames, forward (after a swing the elbow catches up with the frames)
+// or backward (before it, the elbow sets off early). False when the clip ends before the elbow
+// has caught up (the frames are then left as they were).
+bool continue_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps, int frame_count,
+                       bool backward, std::vector<glm::quat>* rotations, int* changed) {
+  const int J = rig.joint_count;
+  const float trigger_m = kSwingTriggerMPerS / fps;
+  const float max_step_m = kSwingMaxMPerS / fps;
+  const float max_change_m = kSwingMaxAccelMPerS2 / (fps * fps);
+  const ArmRig& arm = rig.arms[s];
+  std::vector<glm::quat> out(*rotations);
+  PoseBuilder pb(rig);
+  ArmPath p;
+  int count = 0;
+  for (int k = 0; k < frame_count; ++k) {
+    const int f = backward ? frame_count - 1 - k : k;
+    glm::quat* local = &out[static_cast<size_t>(f) * J];
+    pb.set_from_local(&(*rotations)[static_cast<size_t>(f) * J]);
+    const glm::vec3 shoulder = pb.position(arm.upper), elbow = pb.position(arm.lower);
+    const glm::vec3 wrist = pb.position(arm.hand);
+    const glm::vec3 line = wrist - shoulder;
+    const float length = glm::length(line);
+    const glm::vec3 from_line =
+        length > 1e-4f ? reject(elbow - shoulder, line / length) : glm::vec3(0.0f);
+    const float radius = glm::length(from_line);
+    if (!p.has_previous || radius < kMinRadiusM) {
+      if (p.active) return false;
+      p = ArmPath{};
+      p.has_previous = true;
+      p.previous_elbow = elbow;
+      continue;
+    }
+    const glm::vec3 axis = line / length;
+    // The angle about the line from the frame's elbow to where the previous frame left it.
+    const glm::vec3 held = reject(p.previous_elbow - shoulder, axis);
+    const glm::vec3 own = from_line / radius;
+    const float held_angle =
+        glm::length(held) > 1e-6f
+            ? std::atan2(glm::dot(glm::cross(own, held), axis), glm::dot(own, held))
+            : 0.0f;
+    float to_own = -held_angle;  // the swing from the held elbow to the frame's own
+    if (!p.active) {
+      if (radius * std::fabs(to_own) <= trigger_m) {
+        p.previous_elbow = elbow;
+        continue;
+      }
+      p.active = true;
+      p.rate_rad = 0.0f;
+      to_own = wrap_angle(to_own);
+      // The way round the circle that keeps the arm shallower in the trunk; the shorter one
+      // unless the longer is clearly shallower (the elbow swung over the shoulder rather than
+      // through the chest).
+      if (body) {
+        const float other_way = to_own - (to_own < 0.0f ? -2.0f : 2.0f) * kPi;
+        const float short_depth =
+            route_depth(*body, s, shoulder, p.previous_elbow, wrist, axis, to_own);
+        const float long_depth =
+            route_depth(*body, s, shoulder, p.previous_elbow, wrist, axis, other_way);
+        if (long_depth + kRouteMarginM < short_depth) to_own = other_way;
+      }
+    } else {
+      // The same way round as the frames before (the remainder carried on, not re-wrapped).
+      to_own = p.remaining_rad + wrap_angle(to_own - p.remaining_rad);
+    }
+    const float max_rate = max_step_m / radius, max_change = max_change_m / radius;
+    const float sign = to_own < 0.0f ? -1.0f : 1.0f;
+    // As fast as the bounds allow, slowing down in time to arrive with no swing left.
+    const float wanted =
+        sign * std::min(max_rate, std::sqrt(2.0f * max_change * std::fabs(to_own)));
+    const float swing = std::clamp(wanted, p.rate_rad - max_change, p.rate_rad + max_change);
+    if (swing * sign >= std::fabs(to_own)) {
+      // Arrived: the frame's own elbow from here on.
+      p.active = false;
+      p.rate_rad = 0.0f;
+      p.previous_elbow = elbow;
+      continue;
+    }
+    p.remaining_rad = to_own - swing;
+    p.rate_rad = swing;
+    // The upper arm and forearm turned by -remaining about the line through the shoulder joint
+    // (the wrist on the line stays); the hand keeps its rotation in space.
+    const glm::quat turn = glm::angleAxis(-p.remaining_rad, axis);
+    p.previous_elbow = shoulder + turn * (elbow - shoulder);
+    turn_arm(rig, arm, turn, pb, local);
+    ++count;
+  }
+  if (p.active) return false;
+  rotations->swap(out);
+  *changed += count;
+  return true;
+}
+
+// The same swings centred on the frame of each jump: the elbow sets off before it and arrives
+// after it, its angle about the shoulder-wrist line offset by a smoothstep (3t^2 - 2t^3) that
+// rises by the jump over a window long enough for the speed and acceleration bounds, less the
+// jump itself from its frame on. The offsets of overlapping windows add. False when a window does
+// not fit in the clip.
+bool centred_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps, int frame_count,
+                      std::vector<glm::quat>* rotations, int* changed) {
+  const int J = rig.joint_count;
+  const float trigger_m = kSwingTriggerMPerS / fps;
+  const float max_step_m = kSwingMaxMPerS / fps;
+  const float max_change_m = kSwingMaxAccelMPerS2 / (fps * fps);
+  const ArmRig& arm = rig.arms[s];
+  std::vector<glm::vec3> shoulder(frame_count), elbow(frame_count), wrist(frame_count);
+  PoseBuilder pb(rig);
+  for (int f = 0; f < frame_count; ++f) {
+    pb.set_from_local(&(*rotations)[static_cast<size_t>(f) * J]);
+    shoulder[f] = pb.position(arm.upper);
+    elbow[f] = pb.position(arm.lower);
+    wrist[f] = pb.position(arm.hand);
+  }
+  std::vector<float> offset(frame_count, 0.0f);
+  bool any = false;
+  for (int k = 1; k < frame_count; ++k) {
+    const glm::vec3 line = wrist[k] - shoulder[k];
+    const float length = glm::length(line);
+    if (length < 1e-4f) continue;
+    const glm::vec3 axis = line / length;
+    const glm::vec3 own = reject(elbow[k] - shoulder[k], axis),
+                    held = reject(elbow[k - 1] - shoulder[k], axis);
+    const float radius = glm::length(own);
+    if (radius < kMinRadiusM || glm::length(held) < kMinRadiusM) continue;
+    // The jump: the angle about the line from where the previous frame's elbow is held to the
+    // frame's own.
+    float jump = std::atan2(glm::dot(glm::cross(held, own), axis), glm::dot(held, own));
+    if (radius * std::fabs(jump) <= trigger_m) continue;
+    if (body) {
+      const float other_way = jump - (jump < 0.0f ? -2.0f : 2.0f) * kPi;
+      const float short_depth =
+          route_depth(*body, s, shoulder[k], elbow[k - 1], wrist[k], axis, jump);
+      const float long_depth =
+          route_depth(*body, s, shoulder[k], elbow[k - 1], wrist[k], axis, other_way);
+      if (long_depth + kRouteMarginM < short_depth) jump = other_way;
+    }
+    const float arc = radius * std::fabs(jump);
+    const int window = static_cast<int>(
+        std::ceil(std::max(1.5f * arc / max_step_m, std::sqrt(6.0f * arc / max_change_m))));
+    if (window >= frame_count) return false;
+    const int start = std::clamp(k - window / 2, 0, frame_count - 1 - window);
+    for (int f = start; f < frame_count; ++f) {
+      const float t = std::min(1.0f, static_cast<float>(f - start) / static_cast<float>(window));
+      offset[f] += jump * t * t * (3.0f - 2.0f * t) - (f >= k ? jump : 0.0f);
+    }
+    any = true;
+  }
+  if (!any) return true;
+  for (int f = 0; f < frame_count; ++f) {
+    const glm::vec3 line = wrist[f] - shoulder[f];
+    if (std::fabs(offset[f]) < 1e-6f || glm::length(line) < 1e-4f) continue;
+    glm::quat* local = &(*rotations)[static_cast<size_t>(f) * J];
+    pb.set_from_local(local);
+    turn_arm(rig, arm, glm::angleAxis(offset[f], line / glm::length(line)), pb, local);
+    ++*changed;
+  }
+  return true;
+}
+
+// The deepest `side`'s arm goes into the trunk or the other forearm over the clip (the forearm's
+// wrist end allowed to touch, as for a hand in contact: the same leniency for every variant).
+float deepest_arm(const Rig& rig, const BodyModel& body, Side side, int frame_count,
+                  const std::vector<glm::quat>& rotations) {
+  PoseBuilder pb(rig);
+  float deepest = 0.0f;
+  for (int f = 0; f < frame_count; ++f) {
+    pb.set_from_local(&rotations[static_cast<size_t>(f) * rig.joint_count]);
+    deepest = std::max({deepest, arm_penetration(body, pb, side, true, true, true).depth_m,
+                        hand_penetration(body, pb, other(side), false, true).depth_m});
+  }
+  return deepest;
+}
+
+}  // namespace
+
+int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int frame_count,
+                         std::vector<glm::quat>* rotations) {
+  if (frame_count < 2 || fps <= 0.0f) return 0;
+  // One pass to find the arms whose elbow swings faster than the trigger at all (most clips have
+  // none, and are left as they are at the cost of one pose per frame).
+  bool swings[2] = {false, false};
+  {
+    PoseBuilder pb(rig);
+    glm::vec3 previous[2];
+    const float trigger_m = kSwingTriggerMPerS / fps;
+    for (int f = 0; f < frame_count; ++f) {
+      pb.set_from_local(&(*rotations)[static_cast<size_t>(f) * rig.joint_count]);
+      for (Side s : {kLeft, kRight}) {
+        const ArmRig& arm = rig.arms[s];
+        const glm::vec3 shoulder = pb.position(arm.upper), elbow = pb.position(arm.lower);
+        const glm::vec3 line = pb.position(arm.hand) - shoulder;
+        if (f > 0 && glm::length(line) > 1e-4f) {
+          const glm::vec3 axis = glm::normalize(line);
+          const glm::vec3 own = reject(elbow - shoulder, axis),
+                          held = reject(previous[s] - shoulder, axis);
+          if (glm::length(own) >= kMinRadiusM && glm::length(held) >= kMinRadiusM &&
+              glm::length(own) * std::fabs(std::atan2(glm::dot(glm::cross(held, own), axis),
+                                                      glm::dot(held, own))) >
+                  trigger_m)
+            swings[s] = true;
+        }
+        previous[s] = elbow;
+      }
+    }
+  }
+  int changed = 0;
+  for (Side s : {kLeft, kRight}) {
+    if (!swings[s]) continue;
+    // The variants: the swing centred on the jump, the elbow catching up after it or setting off
+    // before it; the way round chosen by the body or the shorter. The one whose elbow is nearest
+    // the smoothness bounds in step and change of step wins, if nearer than the clip's own, and
+    // only where it keeps the arm as far out of the body as the clip had it (or within the 5 mm
+    // rule): the corpus check counts depth, and an elbow swung through the chest or the head is no
+    // better than a jump.
+    const float written_depth = body ? deepest_arm(rig, *body, s, frame_count, *rotations) : 0.0f;
+    const float allowed_depth = std::max(written_depth, kFreeDepthM) + kDeeperToleranceM;
+    std::vector<glm::quat> best;
+    int best_changed = 0;
+    float best_roughness = elbow_roughness(rig, s, fps, frame_count, *rotations);
+    for (int variant = 0; variant < 6; ++variant) {
+      const bool by_body = variant % 2 == 0;
+      if (!body && by_body) continue;
+      std::vector<glm::quat> trial(*rotations);
+      int count = 0;
+      const BodyModel* route = by_body ? body : nullptr;
+      const bool arrived =
+          variant < 2   ? centred_arm_path(rig, route, s, fps, frame_count, &trial, &count)
+          : variant < 4 ? continue_arm_path(rig, route, s, fps, frame_count, false, &trial, &count)
+                        : continue_arm_path(rig, route, s, fps, frame_count, true, &trial, &count);
+      if (!arrived || count == 0) continue;
+      const float roughness = elbow_roughness(rig, s, fps, frame_count, trial);
+      if (roughness >= best_roughness - 1e-3f) continue;
+      if (body && deepest_arm(rig, *body, s, frame_count, trial) > allowed_depth) continue;
+      best_roughness = roughness;
+      best.swap(trial);
+      best_changed = count;
+    }
+    if (best_changed == 0) continue;
+    rotations->swap(best);
+    changed += best_changed;
+  }
+  return changed;
+}
+
+}  // namespace sw::synthesis
