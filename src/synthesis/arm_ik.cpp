@@ -2,7 +2,11 @@
 #include "synthesis/arm_ik.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <unordered_map>
 
 namespace sw::synthesis {
 namespace {
@@ -84,8 +88,10 @@ const ChainBind& chain_bind(const Rig& rig, Side side) {
   return b;
 }
 
-Chain solve_chain(const Rig& rig, Side side, const glm::vec3& wrist_target, float swivel) {
-  const ChainBind& bind = chain_bind(rig, side);
+// `bind` is chain_bind(rig, side) and cos_swivel, sin_swivel the swivel's cosine and sine: the
+// caller (solve_at) looks them up once for its rounds, which all solve at the same swivel.
+Chain solve_chain(const Rig& rig, const ChainBind& bind, const glm::vec3& wrist_target, float cos_swivel,
+                  float sin_swivel) {
   const float l1 = bind.l1, l2 = bind.l2;
   const glm::vec3 s0 = bind.s0;
   const glm::vec3 out_dir = bind.out_dir;
@@ -147,7 +153,7 @@ Chain solve_chain(const Rig& rig, Side side, const glm::vec3& wrist_target, floa
   down = glm::normalize(down);
   glm::vec3 outp = reject(out_dir, axis);
   outp = safe_normalize(reject(outp, down), glm::cross(axis, down));
-  glm::vec3 sw = std::cos(swivel) * down + std::sin(swivel) * outp;
+  glm::vec3 sw = cos_swivel * down + sin_swivel * outp;
   c.swivel_axis = glm::cross(down, outp);  // d sw / d swivel = swivel_axis x sw
   glm::vec3 elbow = shoulder_pos + l1 * (cos_a * axis + sin_a * sw);
   c.wrist = shoulder_pos + d * axis;
@@ -307,6 +313,8 @@ constexpr float kDamping = 0.5f;
 
 Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
   const WristFrame w = wrist_frame(rig, side);
+  const ChainBind& bind = chain_bind(rig, side);
+  const float cos_swivel = std::cos(swivel), sin_swivel = std::sin(swivel);
   Solved best;
   best.pose.reach_error_m = 1e30f;
   // A contact part on the forearm (the elbow, the forearm: DAY's elbow on the back of the other
@@ -329,7 +337,7 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
   glm::vec3 wrist_target = t.point - t.hand_delta * t.contact_offset;
   float tw = 0, rd = 0, fl = 0;
   for (int iter = 0; iter < kOrientationRounds; ++iter) {
-    Chain c = solve_chain(rig, side, wrist_target, swivel);
+    Chain c = solve_chain(rig, bind, wrist_target, cos_swivel, sin_swivel);
     solve_wrist(w, c.lower0, t.hand_delta, t.wrist_motion, t.previous, t.max_wrist_step_rad, &tw, &rd, &fl);
     ArmPose p = consider(c, tw, rd, fl);
     glm::vec3 next = t.point - carried(p);
@@ -343,7 +351,7 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
     for (int iter = 0; iter < kReachRounds && best.pose.reach_error_m > 5e-4f; ++iter) {
       glm::vec3 achieved = best.wrist + carried(best.pose);
       wrist_target += t.point - achieved;
-      Chain c = solve_chain(rig, side, wrist_target, swivel);
+      Chain c = solve_chain(rig, bind, wrist_target, cos_swivel, sin_swivel);
       consider(c, tw, rd, fl);
     }
   }
@@ -462,9 +470,7 @@ Solved carry_wrist_motion_excess(const Rig& rig, Side side, const ArmTarget& t, 
   return s;
 }
 
-}  // namespace
-
-ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
+ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   auto clearance = [&](ArmPose* p) {
     if (!t.body) return 0.0f;
     p->trunk_depth_m = arm_trunk_depth(*t.body, side, arm_segments(rig, side, *p), t.hand_contact,
@@ -566,6 +572,70 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
     within = p;
   }
   return within_cost < 1e30f ? within : best;
+}
+
+// The innermost live ArmSolveMemo on this thread (null: solve_arm remembers nothing).
+thread_local ArmSolveMemo* active_memo = nullptr;
+
+}  // namespace
+
+// Every input of a free solve, as bits (so -0 and +0, or two NaNs, are told apart only by
+// being different bits: a miss, solved as before).
+struct ArmSolveMemo::Table {
+  using Key = std::array<std::uint32_t, 24>;
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the words
+      for (std::uint32_t w : k) h = (h ^ w) * 1099511628211ull;
+      return static_cast<std::size_t>(h);
+    }
+  };
+  std::unordered_map<Key, ArmPose, KeyHash> poses;
+  std::size_t hits = 0;
+
+  static Key key_of(const Rig& rig, Side side, const ArmTarget& t) {
+    Key k{};
+    unsigned char* out = reinterpret_cast<unsigned char*>(k.data());
+    auto put = [&out](const void* p, std::size_t n) {
+      std::memcpy(out, p, n);
+      out += n;
+    };
+    const Rig* rig_ptr = &rig;
+    const BodyModel* body = t.body;
+    const std::uint32_t flags = static_cast<std::uint32_t>(side) | (t.auto_swivel ? 1u << 8 : 0u) |
+                                (t.hand_contact ? 1u << 9 : 0u) | (t.has_near_swivel ? 1u << 10 : 0u) |
+                                (t.seek_orientation_acceptance ? 1u << 11 : 0u);
+    put(&rig_ptr, sizeof rig_ptr);
+    put(&body, sizeof body);
+    put(&flags, sizeof flags);
+    put(&t.point, sizeof t.point);
+    put(&t.contact_offset, sizeof t.contact_offset);
+    put(&t.hand_delta, sizeof t.hand_delta);
+    put(&t.wrist_motion, sizeof t.wrist_motion);
+    put(&t.swivel_rad, sizeof t.swivel_rad);
+    put(&t.near_swivel_rad, sizeof t.near_swivel_rad);
+    put(&t.max_wrist_step_rad, sizeof t.max_wrist_step_rad);
+    return k;
+  }
+};
+
+ArmSolveMemo::ArmSolveMemo() : table_(std::make_unique<Table>()), outer_(active_memo) { active_memo = this; }
+ArmSolveMemo::~ArmSolveMemo() { active_memo = outer_; }
+std::size_t ArmSolveMemo::hits() const { return table_->hits; }
+
+ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
+  // A solve continuing a path (t.previous) reads the previous pose too: not remembered.
+  if (!active_memo || t.previous) return solve_arm_uncached(rig, side, t);
+  ArmSolveMemo::Table& table = *active_memo->table_;
+  const ArmSolveMemo::Table::Key key = ArmSolveMemo::Table::key_of(rig, side, t);
+  const auto found = table.poses.find(key);
+  if (found != table.poses.end()) {
+    ++table.hits;
+    return found->second;
+  }
+  const ArmPose pose = solve_arm_uncached(rig, side, t);
+  table.poses.emplace(key, pose);
+  return pose;
 }
 
 namespace {

@@ -2632,6 +2632,9 @@ std::vector<StepPeaks> step_peaks(const Rig& rig, const SignMotion& m,
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors) {
+  // The sign's arm solves asked again with the same target are answered from memory (arm_ik.h;
+  // the clip is the same to the bit), also in the second solve at a stretched timing below.
+  ArmSolveMemo arm_solves;
   std::vector<StepSpan> spans;
   if (!synthesize_sign_motion_timed(ctx, sign, where, {}, out, errors, &spans)) return false;
   // A faster signer still has a human hand: the speed factor divides a step's time, so along

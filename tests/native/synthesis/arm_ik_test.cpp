@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "synthesis/collision.h"
 #include "synthesis/hand_parts.h"
@@ -451,6 +452,63 @@ TEST(SynthesisArmIk, AKeyPoseOver10DegreesOffTakesTheSwivelThatRealisesIt) {
   EXPECT_NE(p.swivel_rad, comfort.swivel_rad);
   RecordProperty("comfort_deg", std::to_string(testing::deg(comfort.orientation_error_rad)));
   RecordProperty("searched_deg", std::to_string(testing::deg(p.orientation_error_rad)));
+}
+
+// ArmSolveMemo (a sign's planning asks for the same arm solve again): while one lives, a solve
+// asked again with the same rig, side and target to the bit is answered from memory with the
+// pose the solve returns, and only then; a path's solve (ArmTarget::previous) is never
+// remembered, and nothing is once the memo is gone.
+TEST(SynthesisArmIk, TheArmSolveMemoAnswersOnlyTheSameSolveWithTheSamePose) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+  const BodyModel body = build_body_model(av, rig);
+  const ArmRig& a = rig.arms[kRight];
+  ArmTarget t;
+  t.point = rig.bind_pos[a.upper] + 0.3f * rig.forward - 0.2f * rig.up + 0.05f * rig.left;
+  t.contact_offset = 0.18f * a.finger_dir;
+  t.hand_delta = axis_angle(glm::normalize(rig.forward + 0.3f * rig.up), 1.2f);
+  t.body = &body;
+  t.has_near_swivel = true;
+  t.near_swivel_rad = 0.5f;
+  ArmTarget moved = t;
+  moved.near_swivel_rad = std::nextafter(t.near_swivel_rad, 1.0f);  // one bit off
+  const ArmPose solved = solve_arm(rig, kRight, t);
+  const ArmPose solved_moved = solve_arm(rig, kRight, moved);
+  auto same_bits = [](const ArmPose& x, const ArmPose& y) { return std::memcmp(&x, &y, sizeof(ArmPose)) == 0; };
+  {
+    ArmSolveMemo memo;
+    EXPECT_TRUE(same_bits(solve_arm(rig, kRight, t), solved));
+    EXPECT_EQ(memo.hits(), 0u);
+    EXPECT_TRUE(same_bits(solve_arm(rig, kRight, t), solved));
+    EXPECT_EQ(memo.hits(), 1u);
+    // One bit of one input off: solved, not remembered.
+    EXPECT_TRUE(same_bits(solve_arm(rig, kRight, moved), solved_moved));
+    EXPECT_EQ(memo.hits(), 1u);
+    ArmTarget other_side = t;
+    other_side.point = rig.bind_pos[rig.arms[kLeft].upper] + 0.3f * rig.forward - 0.2f * rig.up;
+    EXPECT_TRUE(same_bits(solve_arm(rig, kLeft, other_side), solve_arm(rig, kLeft, other_side)));
+    EXPECT_EQ(memo.hits(), 2u);
+    // A path's solve reads the previous pose: never remembered.
+    ArmTarget path = t;
+    path.previous = &solved;
+    path.max_wrist_step_rad = 0.2f;
+    solve_arm(rig, kRight, path);
+    solve_arm(rig, kRight, path);
+    EXPECT_EQ(memo.hits(), 2u);
+    {
+      ArmSolveMemo inner;  // the inner scope starts empty and is the one used
+      solve_arm(rig, kRight, t);
+      EXPECT_EQ(inner.hits(), 0u);
+      EXPECT_EQ(memo.hits(), 2u);
+    }
+    solve_arm(rig, kRight, t);  // the outer one again
+    EXPECT_EQ(memo.hits(), 3u);
+  }
+  ArmSolveMemo later;
+  EXPECT_TRUE(same_bits(solve_arm(rig, kRight, t), solved));
+  EXPECT_EQ(later.hits(), 0u);
 }
 
 }  // namespace
