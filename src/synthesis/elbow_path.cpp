@@ -30,6 +30,10 @@ constexpr float kRouteMarginM = 0.01f;
 // within the 5 mm rule's 4 mm where the clip was shallower.
 constexpr float kFreeDepthM = 0.004f;
 constexpr float kDeeperToleranceM = 0.001f;
+// ... and bends the wrist at most this much further than the clip's own largest bend.
+constexpr float kWristBendToleranceRad = 0.05f;
+// Bisection steps for the hand's weight towards its own rotation (2^-12 of the slerp).
+constexpr int kBendSearchSteps = 12;
 
 float wrap_angle(float a) {  // to [-pi, pi)
   return a - 2.0f * kPi * std::floor((a + kPi) / (2.0f * kPi));
@@ -46,20 +50,63 @@ struct ArmPath {
   float rate_rad = 0.0f;
 };
 
+// How far a hand's local rotation is bent from its bind (rig.h local_rotations: the same angle as
+// the hand's turn against the forearm), radians.
+float wrist_bend(const Rig& rig, int hand, const glm::quat& local) {
+  const glm::quat rel = glm::conjugate(rig.bind_local_rot[hand]) * local;
+  return 2.0f * std::acos(std::min(1.0f, std::fabs(rel.w)));
+}
+
+// The largest bend of `side`'s wrist over the clip: the angle of the hand's local rotation from
+// its bind (rig.h local_rotations: the same angle as the hand's turn against the forearm). The
+// swing keeps the hand's orientation in space, so the wrist takes the forearm's turn back; an
+// elbow carried half round its circle that way bent the wrist 2.8-3.1 rad (HEARING-AID1^, gołąb,
+// kelner; the clips' own wrists at most 1.43 rad), far past the wrist's limits (arm_ik.h).
+float largest_wrist_bend(const Rig& rig, Side side, int frame_count,
+                         const std::vector<glm::quat>& rotations) {
+  const int hand = rig.arms[side].hand;
+  float largest = 0.0f;
+  for (int f = 0; f < frame_count; ++f) {
+    largest = std::max(
+        largest, wrist_bend(rig, hand, rotations[static_cast<size_t>(f) * rig.joint_count + hand]));
+  }
+  return largest;
+}
+
 // The upper arm and forearm turned by `turn` (model space) about the line through the shoulder
-// joint and the wrist, `posed` the frame as it was: the wrist on the line stays, and the hand keeps
-// its rotation in space (its local rotation takes the turn back). rig.h local_rotations' formula,
+// joint and the wrist, `posed` the frame as it was: the wrist on the line stays. The hand keeps
+// its rotation in space (its local rotation takes the turn back; rig.h local_rotations' formula,
 // local = L_j * R_j^-1 * D_parent^-1 * D_j * R_j, with the upper arm's and the forearm's deltas
-// turned; the joints between them keep their local rotations.
+// turned) as far as the wrist can follow: where that would bend the wrist past `max_bend_rad`,
+// the hand's local rotation is slerped towards the frame's own (legal) one by the least that
+// keeps the bend within it, and the hand turns with the forearm for the rest. The joints between
+// them keep their local rotations.
 void turn_arm(const Rig& rig, const ArmRig& arm, const glm::quat& turn, const PoseBuilder& posed,
-              glm::quat* local) {
+              float max_bend_rad, glm::quat* local) {
   const int up = arm.upper, hand = arm.hand, forearm = rig.parent[hand];
   const glm::quat du = posed.delta(up), dpu = posed.delta(rig.parent[up]);
   local[up] = glm::normalize(rig.bind_local_rot[up] * glm::conjugate(rig.bind_rot[up]) *
                              glm::conjugate(dpu) * turn * du * rig.bind_rot[up]);
   const glm::quat dh = posed.delta(hand), dpf = turn * posed.delta(forearm);
-  local[hand] = glm::normalize(rig.bind_local_rot[hand] * glm::conjugate(rig.bind_rot[hand]) *
-                               glm::conjugate(dpf) * dh * rig.bind_rot[hand]);
+  const glm::quat own = local[hand];
+  const glm::quat kept =
+      glm::normalize(rig.bind_local_rot[hand] * glm::conjugate(rig.bind_rot[hand]) *
+                     glm::conjugate(dpf) * dh * rig.bind_rot[hand]);
+  if (wrist_bend(rig, hand, kept) <= max_bend_rad) {
+    local[hand] = kept;
+    return;
+  }
+  // The least weight towards the frame's own rotation that keeps the bend within the bound
+  // (the own rotation is within it: weight 1 always does).
+  float lo = 0.0f, hi = 1.0f;
+  for (int i = 0; i < kBendSearchSteps; ++i) {
+    const float mid = 0.5f * (lo + hi);
+    if (wrist_bend(rig, hand, slerp_shortest(kept, own, mid)) <= max_bend_rad)
+      hi = mid;
+    else
+      lo = mid;
+  }
+  local[hand] = glm::normalize(slerp_shortest(kept, own, hi));
 }
 
 // How far `side`'s elbow is from the smoothness bounds over the clip: the larger of its largest
@@ -104,7 +151,8 @@ float route_depth(const BodyModel& body, Side s, const glm::vec3& shoulder, cons
 // or backward (before it, the elbow sets off early). False when the clip ends before the elbow
 // has caught up (the frames are then left as they were).
 bool continue_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps, int frame_count,
-                       bool backward, std::vector<glm::quat>* rotations, int* changed) {
+                       bool backward, float max_bend_rad, std::vector<glm::quat>* rotations,
+                       int* changed) {
   const int J = rig.joint_count;
   const float trigger_m = kSwingTriggerMPerS / fps;
   const float max_step_m = kSwingMaxMPerS / fps;
@@ -183,7 +231,7 @@ bool continue_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps,
     // (the wrist on the line stays); the hand keeps its rotation in space.
     const glm::quat turn = glm::angleAxis(-p.remaining_rad, axis);
     p.previous_elbow = shoulder + turn * (elbow - shoulder);
-    turn_arm(rig, arm, turn, pb, local);
+    turn_arm(rig, arm, turn, pb, max_bend_rad, local);
     ++count;
   }
   if (p.active) return false;
@@ -198,7 +246,7 @@ bool continue_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps,
 // jump itself from its frame on. The offsets of overlapping windows add. False when a window does
 // not fit in the clip.
 bool centred_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps, int frame_count,
-                      std::vector<glm::quat>* rotations, int* changed) {
+                      float max_bend_rad, std::vector<glm::quat>* rotations, int* changed) {
   const int J = rig.joint_count;
   const float trigger_m = kSwingTriggerMPerS / fps;
   const float max_step_m = kSwingMaxMPerS / fps;
@@ -252,24 +300,39 @@ bool centred_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps, 
     if (std::fabs(offset[f]) < 1e-6f || glm::length(line) < 1e-4f) continue;
     glm::quat* local = &(*rotations)[static_cast<size_t>(f) * J];
     pb.set_from_local(local);
-    turn_arm(rig, arm, glm::angleAxis(offset[f], line / glm::length(line)), pb, local);
+    turn_arm(rig, arm, glm::angleAxis(offset[f], line / glm::length(line)), pb, max_bend_rad,
+             local);
     ++*changed;
   }
   return true;
 }
 
-// The deepest `side`'s arm goes into the trunk or the other forearm over the clip (the forearm's
-// wrist end allowed to touch, as for a hand in contact: the same leniency for every variant).
-float deepest_arm(const Rig& rig, const BodyModel& body, Side side, int frame_count,
-                  const std::vector<glm::quat>& rotations) {
+// How deep `side`'s arm goes over the clip, each part on its own, so that a variant deeper in one
+// is not excused by another's depth: the upper arm and forearm into the trunk or the other forearm
+// (the forearm's wrist end allowed to touch, as for a hand in contact: the same leniency for every
+// variant), the hand into the trunk (the hand turns with the forearm where the wrist cannot take
+// the swing back), and the hands into each other.
+struct ArmDepths {
+  float arm_m = 0.0f, hand_m = 0.0f, hands_m = 0.0f;
+};
+ArmDepths deepest_arm(const Rig& rig, const BodyModel& body, Side side, int frame_count,
+                      const std::vector<glm::quat>& rotations) {
   PoseBuilder pb(rig);
-  float deepest = 0.0f;
+  ArmDepths d;
   for (int f = 0; f < frame_count; ++f) {
     pb.set_from_local(&rotations[static_cast<size_t>(f) * rig.joint_count]);
-    deepest = std::max({deepest, arm_penetration(body, pb, side, true, true, true).depth_m,
-                        hand_penetration(body, pb, other(side), false, true).depth_m});
+    d.arm_m = std::max(d.arm_m, arm_penetration(body, pb, side, true, true, true).depth_m);
+    d.hand_m = std::max(d.hand_m, hand_penetration(body, pb, side, true, false).depth_m);
+    d.hands_m = std::max(d.hands_m, hand_penetration(body, pb, other(side), false, true).depth_m);
   }
-  return deepest;
+  return d;
+}
+
+// Each part within the 5 mm rule's 4 mm or no deeper than the clip had it (1 mm of slack).
+bool within_depths(const ArmDepths& trial, const ArmDepths& written) {
+  auto allowed = [](float w) { return std::max(w, kFreeDepthM) + kDeeperToleranceM; };
+  return trial.arm_m <= allowed(written.arm_m) && trial.hand_m <= allowed(written.hand_m) &&
+         trial.hands_m <= allowed(written.hands_m);
 }
 
 }  // namespace
@@ -313,8 +376,12 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
     // only where it keeps the arm as far out of the body as the clip had it (or within the 5 mm
     // rule): the corpus check counts depth, and an elbow swung through the chest or the head is no
     // better than a jump.
-    const float written_depth = body ? deepest_arm(rig, *body, s, frame_count, *rotations) : 0.0f;
-    const float allowed_depth = std::max(written_depth, kFreeDepthM) + kDeeperToleranceM;
+    const ArmDepths written_depths =
+        body ? deepest_arm(rig, *body, s, frame_count, *rotations) : ArmDepths{};
+    // Nor may it bend the wrist further than the clip already does anywhere (a wrist past its
+    // limits is no better than a jump either).
+    const float own_wrist_bend = largest_wrist_bend(rig, s, frame_count, *rotations);
+    const float allowed_wrist_bend = own_wrist_bend + kWristBendToleranceRad;
     std::vector<glm::quat> best;
     int best_changed = 0;
     float best_roughness = elbow_roughness(rig, s, fps, frame_count, *rotations);
@@ -324,14 +391,18 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
       std::vector<glm::quat> trial(*rotations);
       int count = 0;
       const BodyModel* route = by_body ? body : nullptr;
-      const bool arrived =
-          variant < 2   ? centred_arm_path(rig, route, s, fps, frame_count, &trial, &count)
-          : variant < 4 ? continue_arm_path(rig, route, s, fps, frame_count, false, &trial, &count)
-                        : continue_arm_path(rig, route, s, fps, frame_count, true, &trial, &count);
+      const bool arrived = variant < 2   ? centred_arm_path(rig, route, s, fps, frame_count,
+                                                            own_wrist_bend, &trial, &count)
+                           : variant < 4 ? continue_arm_path(rig, route, s, fps, frame_count, false,
+                                                             own_wrist_bend, &trial, &count)
+                                         : continue_arm_path(rig, route, s, fps, frame_count, true,
+                                                             own_wrist_bend, &trial, &count);
       if (!arrived || count == 0) continue;
       const float roughness = elbow_roughness(rig, s, fps, frame_count, trial);
       if (roughness >= best_roughness - 1e-3f) continue;
-      if (body && deepest_arm(rig, *body, s, frame_count, trial) > allowed_depth) continue;
+      if (largest_wrist_bend(rig, s, frame_count, trial) > allowed_wrist_bend) continue;
+      if (body && !within_depths(deepest_arm(rig, *body, s, frame_count, trial), written_depths))
+        continue;
       best_roughness = roughness;
       best.swap(trial);
       best_changed = count;

@@ -11,8 +11,10 @@
 // elbow does in a frame, it is held where the previous frame left it and moved round the circle
 // towards the frame's own elbow at a bounded speed and acceleration (over several frames), then
 // hands back to the frames as solved. The swing is a rotation of the upper arm and forearm about
-// the shoulder-wrist line, so the wrist's path, the reach and the contacts are unchanged; the hand
-// keeps its orientation in space (the wrist joint takes the swing back).
+// the shoulder-wrist line, so the wrist's path is unchanged; the hand keeps its orientation in
+// space as far as the wrist joint can take the swing back without bending further than the clip
+// bends it anywhere, and turns with the forearm beyond that (a swing is refused if that takes the
+// hand deeper into the body).
 #pragma once
 
 #include <vector>

@@ -23,6 +23,7 @@
 
 #include "arm_depths.h"
 #include "notation/hamnosys.h"
+#include "synthesis/arm_ik.h"
 #include "synthesis/clip_steps.h"
 #include "synthesis/collision.h"
 #include "synthesis/phrase_text.h"
@@ -770,6 +771,21 @@ TEST_P(MotionSmoothness, AFingerAtTheEarArcingDownWhileItTurnsCarriesTheElbowRou
   expect_smooth(GetParam(), w, Bound{});
   RecordProperty("worst_step_mm", std::to_string(w.step_m * 1000.0f) + " " + w.step_what);
   RecordProperty("worst_change_mm", std::to_string(w.change_m * 1000.0f) + " " + w.change_what);
+  // ... and the wrist joint within its limits in every frame, the swing too: the hand's local
+  // rotation (flexion and deviation; the forearm carries the twist) bent from its bind at most
+  // as far as the largest flexion and deviation together allow. Carrying the elbow round with
+  // the hand's orientation kept in space bent this wrist 2.8 rad (project avatar).
+  const ArmLimits& lim = arm_limits();
+  const float flex = std::max(lim.wrist_flex, lim.wrist_ext);
+  const float dev = std::max(lim.radial_dev, lim.ulnar_dev);
+  const float max_bend = 2.0f * std::acos(std::cos(0.5f * flex) * std::cos(0.5f * dev));
+  const int hand = rig_.arms[kRight].hand;
+  for (int f = 0; f < r.clip.frame_count; ++f) {
+    const glm::quat rel = glm::conjugate(rig_.bind_local_rot[hand]) *
+                          r.clip.rotations[static_cast<size_t>(f) * rig_.joint_count + hand];
+    const float bend = 2.0f * std::acos(std::min(1.0f, std::fabs(rel.w)));
+    EXPECT_LE(bend, max_bend + 0.01f) << GetParam() << " right wrist at frame " << f;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Rigs, MotionSmoothness, ::testing::Values("avatar", "reference"));
