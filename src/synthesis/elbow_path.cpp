@@ -311,7 +311,7 @@ bool centred_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps, 
 // is not excused by another's depth: the upper arm and forearm into the trunk or the other forearm
 // (the forearm's wrist end allowed to touch, as for a hand in contact: the same leniency for every
 // variant), the hand into the trunk (the hand turns with the forearm where the wrist cannot take
-// the swing back), and the hands into each other.
+// the swing back), and each hand into the other hand and forearm.
 struct ArmDepths {
   float arm_m = 0.0f, hand_m = 0.0f, hands_m = 0.0f;
 };
@@ -323,7 +323,8 @@ ArmDepths deepest_arm(const Rig& rig, const BodyModel& body, Side side, int fram
     pb.set_from_local(&rotations[static_cast<size_t>(f) * rig.joint_count]);
     d.arm_m = std::max(d.arm_m, arm_penetration(body, pb, side, true, true, true).depth_m);
     d.hand_m = std::max(d.hand_m, hand_penetration(body, pb, side, true, false).depth_m);
-    d.hands_m = std::max(d.hands_m, hand_penetration(body, pb, other(side), false, true).depth_m);
+    d.hands_m = std::max({d.hands_m, hand_penetration(body, pb, side, false, true).depth_m,
+                          hand_penetration(body, pb, other(side), false, true).depth_m});
   }
   return d;
 }

@@ -176,7 +176,9 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
   // Every stage above interpolates swivel numbers, whose zero turns half round for a wrist across
   // the body at the shoulder joint's coronal plane: the elbow's path is made continuous here, on
   // the whole clip (signs, transitions and holds), before the penetration check measures it.
-  continue_elbow_paths(rig, &ctx.body, fps, clip.frame_count, &clip.rotations);
+  if (options.carry_elbows)
+    result.report.elbow_frames_carried =
+        continue_elbow_paths(rig, &ctx.body, fps, clip.frame_count, &clip.rotations);
   clip.root_translation.assign(clip.frame_count, rig.root_translation);
   if (options.face) {
     // The face layer after the body: head gestures and gaze ride on the synthesised neck.

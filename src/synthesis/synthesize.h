@@ -26,6 +26,10 @@ struct SynthesisOptions {
   float hold_s = 0.25f;           // hold of a static sign's key pose (a letter)
   float pause_s = 0.45f;          // pause inserted at punctuation
   bool avoid_collisions = true;   // route transitions/movements through via-poses when needed
+  // Carry an elbow that the solved frames swing round its circle in one frame (a swivel read in
+  // its turned zero) round at a signer's speed instead (elbow_path.h). false: the frames as
+  // solved (the tests compare the two).
+  bool carry_elbows = true;
   // The face channel (face/face_track.h): an emotion over the whole phrase, the signs' own
   // non-manuals (brows, head, expression), mouthing, and blinks at pauses.
   bool face = true;               // false: no morph tracks, head and eyes as the body leaves them
@@ -45,6 +49,7 @@ struct SynthesisReport {
   float max_penetration_m = 0.0f;     // deepest unintended penetration over all frames
   int via_points_inserted = 0;        // collision routing (seed: intermediate states)
   int transition_states = 0;          // sum of k over transitions, seed eq. (10)
+  int elbow_frames_carried = 0;       // arm-frames whose elbow elbow_path.h carried round
   std::vector<float> contact_distances_m;  // per hand placed on a body/hand place: part -> anchor
   std::vector<std::uint8_t> intended_contact;  // per frame: sign_motion.h exempt bits
   std::vector<std::string> warnings;  // unreachable targets, clamped joints, ...
