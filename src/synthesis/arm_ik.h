@@ -30,6 +30,8 @@ const ArmLimits& arm_limits();
 
 struct ArmPose;
 
+// Every field but `previous` is part of ArmSolveMemo's key (arm_ik.cpp, Table::key_of): a field
+// added here must be added there too, or a remembered pose would answer a different solve.
 struct ArmTarget {
   glm::vec3 point{0.0f};            // where the contact point must go (model space)
   glm::vec3 contact_offset{0.0f};   // contact point minus wrist, hand in its bind orientation
