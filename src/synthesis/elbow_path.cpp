@@ -39,6 +39,12 @@ float wrap_angle(float a) {  // to [-pi, pi)
   return a - 2.0f * kPi * std::floor((a + kPi) / (2.0f * kPi));
 }
 
+// The angle about `axis` (right-handed, in (-pi, pi]) that turns `from` onto `to`, both square to
+// the axis: how far an elbow swung round the shoulder-wrist line between two frames.
+float turn_about(const glm::vec3& from, const glm::vec3& to, const glm::vec3& axis) {
+  return std::atan2(glm::dot(glm::cross(from, to), axis), glm::dot(from, to));
+}
+
 // One arm's continued path: the elbow held from the previous frame and the swing still to go.
 struct ArmPath {
   bool has_previous = false;
@@ -181,14 +187,10 @@ bool continue_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps,
       continue;
     }
     const glm::vec3 axis = line / length;
-    // The angle about the line from the frame's elbow to where the previous frame left it.
+    // The swing from where the previous frame left the elbow to the frame's own, about the line.
     const glm::vec3 held = reject(p.previous_elbow - shoulder, axis);
     const glm::vec3 own = from_line / radius;
-    const float held_angle =
-        glm::length(held) > 1e-6f
-            ? std::atan2(glm::dot(glm::cross(own, held), axis), glm::dot(own, held))
-            : 0.0f;
-    float to_own = -held_angle;  // the swing from the held elbow to the frame's own
+    float to_own = glm::length(held) > 1e-6f ? turn_about(held, own, axis) : 0.0f;
     if (!p.active) {
       if (radius * std::fabs(to_own) <= trigger_m) {
         p.previous_elbow = elbow;
@@ -273,7 +275,7 @@ bool centred_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps, 
     if (radius < kMinRadiusM || glm::length(held) < kMinRadiusM) continue;
     // The jump: the angle about the line from where the previous frame's elbow is held to the
     // frame's own.
-    float jump = std::atan2(glm::dot(glm::cross(held, own), axis), glm::dot(held, own));
+    float jump = turn_about(held, own, axis);
     if (radius * std::fabs(jump) <= trigger_m) continue;
     if (body) {
       const float other_way = jump - (jump < 0.0f ? -2.0f : 2.0f) * kPi;
@@ -359,9 +361,7 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
           const glm::vec3 own = reject(elbow - shoulder, axis),
                           held = reject(previous[s] - shoulder, axis);
           if (glm::length(own) >= kMinRadiusM && glm::length(held) >= kMinRadiusM &&
-              glm::length(own) * std::fabs(std::atan2(glm::dot(glm::cross(held, own), axis),
-                                                      glm::dot(held, own))) >
-                  trigger_m)
+              glm::length(own) * std::fabs(turn_about(held, own, axis)) > trigger_m)
             swings[s] = true;
         }
         previous[s] = elbow;
