@@ -2597,7 +2597,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // side in turn, and ramped as before; a side is kept only if the ramped clip's arms are no
   // deeper than with the sides chosen per frame and its largest wrist or elbow step per frame is
   // smaller. Scored after the ramps: the depth a forced side leaves frame by frame foretold the
-  // ramped clip's badly (a side no deeper at any frame before the ramps still sank 6 corpus
+  // ramped clip's badly (a side at most 1 mm deeper at any frame before the ramps sank 6 corpus
   // signs by over 2 mm after them). Runs whose fixes share a side, most, cost nothing.
   auto choose_run_sides_and_ramp = [&]() {
     const int n = out->frame_count;
