@@ -71,14 +71,15 @@ std::vector<glm::quat> ramp_turns(const std::vector<glm::quat>& fix, int radius)
 }
 
 SwivelChoice nearest_clear_swivel(float base_depth_m, float clear_m, float prefer, float min_gain_m,
-                                  const std::function<float(float offset_rad, bool* usable)>& depth_at) {
+                                  const std::function<float(float offset_rad, bool* usable)>& depth_at,
+                                  bool only_prefer) {
   SwivelChoice best{0.0f, base_depth_m};
   const float first_sign = prefer < 0.0f ? -1.0f : 1.0f;
   int other_clear_k = 0;  // the step at which the other side cleared (0: not yet)
   for (int k = 1; k <= 12; ++k) {
     if (other_clear_k > 0 && k > other_clear_k + kPreferSlackSteps) break;
     for (float sign : {first_sign, -first_sign}) {
-      if (other_clear_k > 0 && sign != first_sign) continue;
+      if ((other_clear_k > 0 || (only_prefer && prefer != 0.0f)) && sign != first_sign) continue;
       const float offset = sign * 0.1f * static_cast<float>(k);
       bool usable = true;
       const float d = depth_at(offset, &usable);

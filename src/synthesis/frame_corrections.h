@@ -32,13 +32,15 @@ std::vector<glm::quat> ramp_turns(const std::vector<glm::quat>& fix, int radius)
 // `depth_at(offset, &usable)` poses the arm at base + offset and returns its depth (m); an
 // unusable offset (a touch that no longer touches) is skipped. Without a clear offset, the
 // largest improvement over `base_depth_m` wins if it gains at least `min_gain_m` (and more than
-// 0.1 mm); none: offset 0.
+// 0.1 mm); none: offset 0. `only_prefer`: the `prefer` side alone is searched (a run of frames
+// whose side was chosen as a whole, sign_motion.cpp: the other side is not an option there).
 constexpr int kPreferSlackSteps = 3;
 struct SwivelChoice {
   float offset_rad = 0.0f;
   float depth_m = 0.0f;
 };
 SwivelChoice nearest_clear_swivel(float base_depth_m, float clear_m, float prefer, float min_gain_m,
-                                  const std::function<float(float offset_rad, bool* usable)>& depth_at);
+                                  const std::function<float(float offset_rad, bool* usable)>& depth_at,
+                                  bool only_prefer = false);
 
 }  // namespace sw::synthesis

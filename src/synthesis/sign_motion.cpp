@@ -17,6 +17,7 @@
 #include "synthesis/movement.h"
 #include "synthesis/orientation.h"
 #include "synthesis/thorax_turn.h"
+#include "synthesis/transition.h"
 
 namespace sw::synthesis {
 
@@ -2154,7 +2155,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // and fingers unchanged); the needed offset changes gradually along a path, so does the elbow.
   auto clear_arm = [&](const HandPlan& plan, bool check_forearm, ArmTarget* t, const HandState& h,
                        PoseBuilder* pb, glm::quat* applied_turn, float* applied_swivel, float prefer,
-                       float min_gain_m, float clear_m) {
+                       bool only_prefer, float min_gain_m, float clear_m) {
     // Scored with the hand's own penetration too: another swivel leaves the wrist other angles
     // within its limits, and the hand must not turn into the body instead.
     auto depth_of = [&]() {
@@ -2187,7 +2188,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       ap = solve_arm(rig, plan.side, *t);
       *usable = ap.reach_error_m <= base_reach + 0.002f;  // a touch must still touch
       return *usable ? depth_with(ap) : 0.0f;
-    });
+    }, only_prefer);
     if (choice.offset_rad != 0.0f) {
       best_depth = choice.depth_m;
       best_swivel = base + choice.offset_rad;
@@ -2223,6 +2224,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   std::vector<std::array<float, 2>> swivel_fixes(frames.size());
   // The swivel offsets the ramp rounds added to each frame so far (clear_arm's preferred side).
   std::vector<std::array<float, 2>> swivel_ramped(frames.size(), {0.0f, 0.0f});
+  // The side a run of swivel fixes is given as a whole (+1 / -1; 0: chosen per frame), per hand.
+  std::vector<std::array<float, 2>> forced_side(frames.size(), {0.0f, 0.0f});
   // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
   std::vector<std::array<glm::vec3, 2>> push_offsets(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
   // A wrist that flips: where a hand's requested orientation is out of the wrist's reach, the
@@ -2436,10 +2439,14 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         push_offsets[f][i] = t.point - start_point;
         turns[f][i] = glm::quat(1, 0, 0, 0);
         swivel_fixes[f][i] = 0.0f;
+        const float forced = forced_side[f][i];
         if (ctx.options.avoid_collisions)
           clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i],
-                    swivel_ramped[f][i] > 0.05f ? 1.0f : swivel_ramped[f][i] < -0.05f ? -1.0f : 0.0f,
-                    moving ? kMinSwivelGainM : 0.0f, ramp_only ? kRampOnlyClearM : 0.002f);
+                    forced != 0.0f                 ? forced
+                    : swivel_ramped[f][i] > 0.05f  ? 1.0f
+                    : swivel_ramped[f][i] < -0.05f ? -1.0f
+                                                   : 0.0f,
+                    forced != 0.0f, moving ? kMinSwivelGainM : 0.0f, ramp_only ? kRampOnlyClearM : 0.002f);
       }
       pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
       out->exempt[f] = exempt;
@@ -2509,6 +2516,9 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // third (a third round correcting at 2 mm like the others: also 18, but HOSPITAL's small
   // last fixes came on at once, 34 -> 14 m/s^2 with the net; a fourth round: 19).
   constexpr int kRampRounds = 3;
+  // The ramp rounds, from the first solve's corrections (run once, or once per swivel side a run
+  // of fixes is tried with: choose_run_sides_and_ramp below).
+  auto ramp_rounds = [&]() {
   for (int round = 0; round < kRampRounds; ++round) {
   bool any_turn = false, any_swivel = false;
   for (const auto& ft : turns)
@@ -2574,6 +2584,116 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         push_offsets[f][i] = glm::vec3(0.0f);
       }
   }
+  };
+  // One side per run of swivel fixes. Where no swivel offset clears an arm, the first solve's
+  // fix is the largest gain, and its side can flip between neighbouring frames (the corpus's
+  // kelner, the right elbow at sign frames 7-14: -1.2, +1.2, -1.1, +1.2, -1.2, -1.2, -1.2, +1.2
+  // rad); ramp_scalars follows the larger weighted neighbour, and over the rounds the ramped
+  // fixes added up to -2.23 rad at one frame and +0.23 at the next (the elbow 551 mm in a frame).
+  // Preferring the previous frame's side changed nothing, a ramp through zero lost the depth of
+  // both sides (docs/SYNTHESIS.md step-census): the choice was still per frame. Here a run of
+  // fixes (fixes within the ramp's reach of each other, 2 kSwivelRamp frames, are one run: their
+  // ramps meet) whose sides mix is cleared again with one side forced on all its frames, each
+  // side in turn, and ramped as before; a side is kept only if the ramped clip's arms are no
+  // deeper than with the sides chosen per frame and its largest wrist or elbow step per frame is
+  // smaller. Scored after the ramps: the depth a forced side leaves frame by frame foretold the
+  // ramped clip's badly (a side at most 1 mm deeper at any frame before the ramps sank 6 corpus
+  // signs by over 2 mm after them). Runs whose fixes share a side, most, cost nothing.
+  auto choose_run_sides_and_ramp = [&]() {
+    const int n = out->frame_count;
+    struct SideRun {
+      int hand, first, last;
+    };
+    std::vector<SideRun> runs;
+    std::vector<char> in_run(frames.size(), 0);
+    for (int i = 0; i < 2 && ctx.options.avoid_collisions; ++i) {
+      for (int f = 0; f < n;) {
+        if (std::abs(swivel_fixes[f][i]) <= 1e-4f) {
+          ++f;
+          continue;
+        }
+        SideRun r{i, f, f};
+        bool plus = false, minus = false;
+        for (int g = f; g < n && g - r.last <= 2 * kSwivelRamp; ++g) {
+          const float x = swivel_fixes[g][i];
+          if (std::abs(x) <= 1e-4f) continue;
+          r.last = g;
+          plus = plus || x > 0.0f;
+          minus = minus || x < 0.0f;
+        }
+        if (plus && minus) {
+          runs.push_back(r);
+          for (int g = r.first; g <= r.last; ++g) in_run[g] = in_run[g] || std::abs(swivel_fixes[g][i]) > 1e-4f;
+        }
+        f = r.last + 1;
+      }
+    }
+    if (runs.empty()) {
+      ramp_rounds();
+      return;
+    }
+    // The state after the first solve, each side's rounds start from it.
+    const std::vector<FrameTarget> first_frames = frames;
+    const auto first_turns = turns;
+    const auto first_fixes = swivel_fixes;
+    const auto first_ramped = swivel_ramped;
+    const auto first_pushes = push_offsets;
+    const auto first_solved = solved;
+    const auto first_continued = continued;
+    const SignMotion first_out = *out;
+    // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
+    // largest wrist or elbow step in one frame.
+    struct Score {
+      float depth_m, step_m;
+    };
+    auto score = [&]() {
+      Score sc{max_penetration(ctx, out->rotations.data(), n, out->exempt.data(), nullptr, nullptr), 0.0f};
+      PoseBuilder pb(rig);
+      std::array<glm::vec3, 4> prev{}, cur{};
+      for (int f = 0; f < n; ++f) {
+        pb.set_from_local(&out->rotations[static_cast<size_t>(f) * J]);
+        for (int s = 0; s < 2; ++s) {
+          cur[2 * s] = pb.position(rig.arms[s].hand);
+          cur[2 * s + 1] = pb.position(rig.arms[s].lower);
+        }
+        if (f > 0)
+          for (size_t k = 0; k < cur.size(); ++k) sc.step_m = std::max(sc.step_m, glm::length(cur[k] - prev[k]));
+        prev = cur;
+      }
+      return sc;
+    };
+    ramp_rounds();
+    Score best = score();
+    const float free_depth = best.depth_m;
+    SignMotion best_out = *out;
+    auto best_solved = solved;
+    for (float side : {1.0f, -1.0f}) {
+      frames = first_frames;
+      turns = first_turns;
+      swivel_fixes = first_fixes;
+      swivel_ramped = first_ramped;
+      push_offsets = first_pushes;
+      solved = first_solved;
+      continued = first_continued;
+      *out = first_out;
+      for (const SideRun& r : runs)
+        for (int g = r.first; g <= r.last; ++g) forced_side[g][r.hand] = side;
+      solve_frames(&in_run);
+      for (auto& fs : forced_side) fs = {0.0f, 0.0f};
+      ramp_rounds();
+      const Score sc = score();
+      // No deeper (0.1 mm: rounding), a smaller step: a side that trades depth for steps is not
+      // taken (kelner's, either side 7-12 mm deeper, both still 0.45 m steps).
+      if (sc.depth_m <= free_depth + 1e-4f && sc.step_m < best.step_m) {
+        best = sc;
+        best_out = *out;
+        best_solved = solved;
+      }
+    }
+    *out = std::move(best_out);
+    solved = std::move(best_solved);
+  };
+  choose_run_sides_and_ramp();
   out->orientation_error_rad.assign(frames.size(), 0.0f);
   for (size_t f = 0; f < frames.size(); ++f)
     for (int i = 0; i < 2; ++i)

@@ -192,8 +192,9 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
 TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   const CorpusSample& s = corpus_sample();
   if (!s.skip.empty()) GTEST_SKIP() << s.skip;
-  // The sample's measured figures, every 2nd clean sign: 2,237 synthesised, 95 over 5 mm
-  // (4.2 %), deepest 77 mm (ratować), after centre-push (hands side by side parted along the line
+  // The sample's measured figures, every 2nd clean sign: 2,237 synthesised, 94 over 5 mm
+  // (4.2 %), deepest 77 mm (ratować), after ramp-side (one swivel side per run of fixes); 95
+  // (4.2 %) after centre-push (hands side by side parted along the line
   // between their centres); 114 (5.1 %) before it. szkoła (119 mm, the whole corpus's deepest)
   // is not among the 2,237 the stride now takes. 108 (4.8 %), deepest 119 mm (szkoła), after
   // other-hand and trunk-depth merged. Before: 110

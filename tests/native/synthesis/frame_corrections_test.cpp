@@ -126,6 +126,27 @@ TEST(SynthesisFrameCorrections, TheNearestClearSwivelKeepsToThePreferredSide) {
   EXPECT_NEAR(nearest_clear_swivel(0.01f, 0.002f, 1.0f, 0.0f, far_up).offset_rad, -0.1f, 1e-5f);
 }
 
+TEST(SynthesisFrameCorrections, ASwivelSideChosenForARunIsTheOnlySideSearched) {
+  // The - side clears at -0.1, the + side only gains (4 mm at +0.7): a run given the + side
+  // (sign_motion.cpp) keeps to it, clear or not; a run given the - side takes -0.1.
+  auto depth = [](float offset, bool* usable) {
+    *usable = true;
+    const int k = static_cast<int>(std::lround(offset * 10.0f));
+    return k == -1 ? 0.0f : k == 7 ? 0.004f : 0.009f;
+  };
+  EXPECT_NEAR(nearest_clear_swivel(0.009f, 0.002f, 1.0f, 0.0f, depth).offset_rad, -0.1f, 1e-5f);
+  SwivelChoice up = nearest_clear_swivel(0.009f, 0.002f, 1.0f, 0.0f, depth, true);
+  EXPECT_NEAR(up.offset_rad, 0.7f, 1e-5f);
+  EXPECT_NEAR(up.depth_m, 0.004f, 1e-7f);
+  EXPECT_NEAR(nearest_clear_swivel(0.009f, 0.002f, -1.0f, 0.0f, depth, true).offset_rad, -0.1f, 1e-5f);
+  // Nothing on the forced side gains: no fix (the other side's clear offset is not taken).
+  auto only_down = [](float offset, bool* usable) {
+    *usable = true;
+    return offset < 0.0f ? 0.0f : 0.009f;
+  };
+  EXPECT_EQ(nearest_clear_swivel(0.009f, 0.002f, 1.0f, 0.0f, only_down, true).offset_rad, 0.0f);
+}
+
 TEST(SynthesisFrameCorrections, AnUnusableSwivelIsSkippedAndWithoutAClearOneTheShallowestWinsIfItGainsEnough) {
   // +0.1 would clear but loses the touch: skipped, -0.2 is taken.
   auto depth = [](float offset, bool* usable) {
