@@ -335,6 +335,7 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
     return p;
   };
   glm::vec3 wrist_target = t.point - t.hand_delta * t.contact_offset;
+  if (t.previous && t.start_at_previous_wrist) wrist_target = t.previous_wrist;
   float tw = 0, rd = 0, fl = 0;
   for (int iter = 0; iter < kOrientationRounds; ++iter) {
     Chain c = solve_chain(rig, bind, wrist_target, cos_swivel, sin_swivel);
@@ -604,7 +605,8 @@ struct ArmSolveMemo::Table {
     const BodyModel* body = t.body;
     const std::uint32_t flags = static_cast<std::uint32_t>(side) | (t.auto_swivel ? 1u << 8 : 0u) |
                                 (t.hand_contact ? 1u << 9 : 0u) | (t.has_near_swivel ? 1u << 10 : 0u) |
-                                (t.seek_orientation_acceptance ? 1u << 11 : 0u);
+                                (t.seek_orientation_acceptance ? 1u << 11 : 0u) |
+                                (t.start_at_previous_wrist ? 1u << 12 : 0u);
     put(&rig_ptr, sizeof rig_ptr);
     put(&body, sizeof body);
     put(&flags, sizeof flags);

@@ -30,8 +30,9 @@ const ArmLimits& arm_limits();
 
 struct ArmPose;
 
-// Every field but `previous` is part of ArmSolveMemo's key (arm_ik.cpp, Table::key_of): a field
-// added here must be added there too, or a remembered pose would answer a different solve.
+// Every field but `previous` (and previous_wrist, read only with it) is part of ArmSolveMemo's key
+// (arm_ik.cpp, Table::key_of): a field added here must be added there too, or a remembered pose
+// would answer a different solve.
 struct ArmTarget {
   glm::vec3 point{0.0f};            // where the contact point must go (model space)
   glm::vec3 contact_offset{0.0f};   // contact point minus wrist, hand in its bind orientation
@@ -51,6 +52,17 @@ struct ArmTarget {
   // max_wrist_step_rad from the previous frame's (0: they hold).
   const ArmPose* previous = nullptr;
   float max_wrist_step_rad = 0.0f;
+  // With `previous`: solve_at's orientation rounds start from previous_wrist (the previous frame's
+  // finished wrist) instead of the wrist the requested orientation puts behind the contact point.
+  // With the wrist angles held the hand's orientation follows the forearm, and the damped
+  // iteration between the wrist's place and the hand has two answers, the wrist on either side of
+  // the contact point; the start decides which (TO-SLEEP2^ swapped sides from frame to frame, its
+  // right elbow 437 mm in one). sign_motion.cpp solves a continued frame both ways and keeps this
+  // start only where the frame ends no deeper and its wrist nearer the previous frame's. Without
+  // `previous` neither does anything (and such a solve is not remembered: previous_wrist is left
+  // out of the key like `previous`, the flag is in it).
+  bool start_at_previous_wrist = false;
+  glm::vec3 previous_wrist{0.0f};
   // The part of hand_delta that is a wrist movement (nod, swing, twist, circle), right-multiplied
   // onto the held orientation (identity: none). The movement then turns the hand as the wrist
   // limits realise the held orientation (the key pose's wrist), and where that takes a wrist

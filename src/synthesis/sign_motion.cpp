@@ -12,6 +12,8 @@
 #include <type_traits>
 
 #include "synthesis/arm_ik.h"
+#include "synthesis/clip_steps.h"
+#include "synthesis/elbow_path.h"
 #include "synthesis/frame_corrections.h"
 #include "synthesis/hand_parts.h"
 #include "synthesis/movement.h"
@@ -156,6 +158,9 @@ constexpr float kStepHandPeakSpeedMPerS = 2.7f;
 // factor): up to this many stretches, each taken only when it measures better (PLEASE on the
 // reference at 60 fps x 1.25: 65.0, 45.5, then 50.2 m/s^2 at one more state).
 constexpr int kStepAccelRounds = 3;
+// How much deeper a sign solved with its continued frames' branches chosen (synthesize_sign_motion)
+// may go than the usual solve and still be kept: 0.5 mm, as for one frame's choice.
+constexpr float kBranchSignSlackM = 0.0005f;
 
 HandState mix_state(const HandState& a, const HandState& b, float s) {
   HandState o;
@@ -1587,11 +1592,13 @@ struct StepSpan {
 
 // The sign's frames with step i (in the order played) at step_states[i] states where that is
 // more than the speed factor gives it (0 or missing: as the speed factor gives); each played
-// step's span into `spans`.
+// step's span into `spans`. choose_branch: a frame continuing a wrist flip is solved from the
+// previous wrist too, and that kept where it is no deeper and nearer (solve_frames);
+// `continued_frames` (optional) receives how many hand-frames continue a flip.
 bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignSpec& sign,
                                   const std::string& where, const std::vector<int>& step_states,
-                                  SignMotion* out, std::vector<SynthesisError>* errors,
-                                  std::vector<StepSpan>* spans) {
+                                  bool choose_branch, SignMotion* out, std::vector<SynthesisError>* errors,
+                                  std::vector<StepSpan>* spans, int* continued_frames) {
   const Rig& rig = ctx.rig;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   Solver solver(ctx, errors, where);
@@ -2255,6 +2262,12 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
   std::vector<std::array<ArmPose, 2>> solved(frames.size());
   std::vector<std::array<char, 2>> continued(frames.size(), {0, 0});
+  // Each frame's finished wrist per hand (after its pushes and arm clearing), and how much deeper
+  // than the usual start's a continued frame solved from the previous wrist may end (0.5 mm:
+  // below the collision checks' rounding of a posed capsule, and a quarter of the 2 mm a push
+  // lets stand).
+  std::vector<std::array<glm::vec3, 2>> final_wrist(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
+  constexpr float kBranchDepthSlackM = 0.0005f;
   auto wrist_change = [](const ArmPose& a, const ArmPose& b) {
     return std::max({std::fabs(a.twist_rad - b.twist_rad), std::fabs(a.wrist_dev_rad - b.wrist_dev_rad),
                      std::fabs(a.wrist_flex_rad - b.wrist_flex_rad)});
@@ -2304,6 +2317,9 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       stops_at_body[i] = c.stop != to && (!to_place || c.through);
     }
   }
+  // A continued frame's pose before its first way and after it (choose_branch, below); made once,
+  // their buffers reused.
+  PoseBuilder pb_start(rig), pb_usual(rig);
   auto solve_frames = [&](const std::vector<char>* redo) {
     if (!redo || (*redo)[0]) {
       out->max_reach_error_m = 0.0f;
@@ -2329,6 +2345,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         turns[f] = turns[f - 1];
         swivel_fixes[f] = swivel_fixes[f - 1];
         push_offsets[f] = push_offsets[f - 1];
+        final_wrist[f] = final_wrist[f - 1];
         out->pushes += prev_pushes;
         continue;
       }
@@ -2376,77 +2393,139 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         t.hand_contact = plan.exempt_trunk;
         bool check_hand = oi == 1 && !plan.exempt_hand && plans[order[0]].active;
         const glm::vec3 start_point = t.point;
-        for (int attempt = 0; attempt < 6; ++attempt) {
-          ArmPose ap = solve_arm(rig, plan.side, t);
-          if (attempt == 0) {
-            continued[f][i] = 0;
-            // A contact part on the arm (DAY's elbow) continues like any other: it moves with
-            // the forearm (arm_ik.cpp solve_at), not on a lever the wrist angles swing.
-            if (f > 0) {
-              const float step = wrist_change(ap, solved[f - 1][i]);
-              const float turn_step = kWristTurnRadPerS * speed / fps;
-              if (step > (continued[f - 1][i] ? turn_step : kWristFlipRadPerS * speed / fps)) {
-                // The pushes and the arm clearing below continue from there too (a fresh solve
-                // there would flip the wrist back: THANK-YOU).
-                t.previous = &solved[f - 1][i];
-                // Where the flip starts, the wrist holds its angles (a flip for one frame, THANK-YOU,
-                // is then no excursion at all); while it lasts, it turns through at turn_step.
-                t.max_wrist_step_rad = continued[f - 1][i] ? turn_step : 0.0f;
-                ap = solve_arm(rig, plan.side, t);
-                continued[f][i] = 1;
+        // A frame that continues a wrist flip (`continued`) is solved twice: from solve_at's usual
+        // start, then from the previous wrist's (ArmTarget::start_at_previous_wrist), each with its
+        // pushes and arm clearing. The iteration has an answer on either side of the contact point
+        // and the start picks one (TO-SLEEP2^ swapped sides, the right elbow 437 mm in a frame).
+        // Chosen per arm solve, before the pushes and the clearing, the near side left arms in the
+        // trunk that those then had to fix (contact-turn, rule E: rajstopy 34.7 -> 95.9 mm): the
+        // frame's final depth decides, so the choice is made here, on the finished frame.
+        const ArmTarget t_start = t;
+        if (choose_branch) pb_start = pb;
+        const int pushes_start = out->pushes;
+        ArmTarget t_usual;
+        ArmPose solved_usual;
+        glm::vec3 push_usual(0.0f);
+        glm::quat turn_usual(1, 0, 0, 0);
+        float fix_usual = 0.0f;
+        int pushes_usual = 0;
+        float depth_usual = 0.0f;
+        // The finished frame's depth: what the push loop and clear_arm measure (the arm and hand
+        // in the trunk; this hand and forearm in the other's, and the other hand in this forearm).
+        auto frame_depth = [&]() {
+          float d = std::max(arm_penetration(ctx.body, pb, plan.side, true, plan.exempt_trunk, check_hand).depth_m,
+                             hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand).depth_m);
+          if (check_hand) d = std::max(d, hand_penetration(ctx.body, pb, plans[order[0]].side, false, true).depth_m);
+          return d;
+        };
+        const int hand_joint = rig.arms[plan.side].hand;
+        for (int way = 0; way < 2; ++way) {
+          if (way == 1) {
+            pb_usual = pb;
+            t_usual = t;
+            solved_usual = solved[f][i];
+            push_usual = push_offsets[f][i];
+            turn_usual = turns[f][i];
+            fix_usual = swivel_fixes[f][i];
+            pushes_usual = out->pushes;
+            depth_usual = frame_depth();
+            pb = pb_start;
+            t = t_start;
+            out->pushes = pushes_start;
+            t.start_at_previous_wrist = true;
+            t.previous_wrist = final_wrist[f - 1][i];
+          }
+          for (int attempt = 0; attempt < 6; ++attempt) {
+            ArmPose ap = solve_arm(rig, plan.side, t);
+            if (attempt == 0) {
+              continued[f][i] = 0;
+              // A contact part on the arm (DAY's elbow) continues like any other: it moves with
+              // the forearm (arm_ik.cpp solve_at), not on a lever the wrist angles swing.
+              if (f > 0) {
+                const float step = wrist_change(ap, solved[f - 1][i]);
+                const float turn_step = kWristTurnRadPerS * speed / fps;
+                if (step > (continued[f - 1][i] ? turn_step : kWristFlipRadPerS * speed / fps)) {
+                  // The pushes and the arm clearing below continue from there too (a fresh solve
+                  // there would flip the wrist back: THANK-YOU).
+                  t.previous = &solved[f - 1][i];
+                  // Where the flip starts, the wrist holds its angles (a flip for one frame, THANK-YOU,
+                  // is then no excursion at all); while it lasts, it turns through at turn_step.
+                  t.max_wrist_step_rad = continued[f - 1][i] ? turn_step : 0.0f;
+                  ap = solve_arm(rig, plan.side, t);
+                  continued[f][i] = 1;
+                }
+              }
+              solved[f][i] = ap;
+            }
+            apply_arm(rig, plan.side, ap, &pb);
+            pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
+            pb.finalize();
+            if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact)) {
+              float reach_m = ap.reach_error_m;
+              // A wrist-led hand reports its contact part's miss (on the forearm: carried by it,
+              // arm_ik.cpp solve_at), not the wrist's.
+              if (wrist_led[i])
+                reach_m = glm::length(arm_segments(rig, plan.side, ap).wrist + ap.lower * h.offset -
+                                      (t.point - wrist_from_contact[i]));
+              out->max_reach_error_m = std::max(out->max_reach_error_m, reach_m);
+            }
+            if (!ctx.options.avoid_collisions) break;
+            Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
+            if (check_hand) {
+              // The first hand in this forearm: solved before this arm was placed, it is checked
+              // by nothing else, and mirrored hands at the centre of neutral space (the corpus's
+              // hamsymmlr circles and strokes, wrists 8-12 cm apart) drove it 37 mm (median) into
+              // this forearm. This arm gives way, opposite to the first hand's way out.
+              Penetration into = hand_penetration(ctx.body, pb, plans[order[0]].side, false, true);
+              if (into.depth_m > pen.depth_m) {
+                pen.depth_m = into.depth_m;
+                pen.push_dir = -into.push_dir;
+              }
+              // Pushed out of the hand only, the forearms then crossed instead (50 corpus signs
+              // deeper, forearm in forearm): the forearms count in the same push.
+              Penetration forearms = arm_penetration(ctx.body, pb, plan.side, false, false, true);
+              if (forearms.depth_m > pen.depth_m) {
+                pen.depth_m = forearms.depth_m;
+                pen.push_dir = forearms.push_dir;
               }
             }
-            solved[f][i] = ap;
+            if (pen.depth_m <= 0.002f) break;
+            // Out along the escape direction and a little forward (away from the body), which the
+            // arm can always follow.
+            t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
+            if (attempt == 0) ++out->pushes;
           }
-          apply_arm(rig, plan.side, ap, &pb);
-          pose_fingers(rig, plan.side, h.angles, ap.hand, &pb);
-          pb.finalize();
-          if (f == 0 && attempt == 0 && is_touch(plan.spec.location.contact)) {
-            float reach_m = ap.reach_error_m;
-            // A wrist-led hand reports its contact part's miss (on the forearm: carried by it,
-            // arm_ik.cpp solve_at), not the wrist's.
-            if (wrist_led[i])
-              reach_m = glm::length(arm_segments(rig, plan.side, ap).wrist + ap.lower * h.offset -
-                                    (t.point - wrist_from_contact[i]));
-            out->max_reach_error_m = std::max(out->max_reach_error_m, reach_m);
-          }
-          if (!ctx.options.avoid_collisions) break;
-          Penetration pen = hand_penetration(ctx.body, pb, plan.side, !plan.exempt_trunk, check_hand);
-          if (check_hand) {
-            // The first hand in this forearm: solved before this arm was placed, it is checked
-            // by nothing else, and mirrored hands at the centre of neutral space (the corpus's
-            // hamsymmlr circles and strokes, wrists 8-12 cm apart) drove it 37 mm (median) into
-            // this forearm. This arm gives way, opposite to the first hand's way out.
-            Penetration into = hand_penetration(ctx.body, pb, plans[order[0]].side, false, true);
-            if (into.depth_m > pen.depth_m) {
-              pen.depth_m = into.depth_m;
-              pen.push_dir = -into.push_dir;
+          push_offsets[f][i] = t.point - start_point;
+          turns[f][i] = glm::quat(1, 0, 0, 0);
+          swivel_fixes[f][i] = 0.0f;
+          const float forced = forced_side[f][i];
+          if (ctx.options.avoid_collisions)
+            clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i],
+                      forced != 0.0f                 ? forced
+                      : swivel_ramped[f][i] > 0.05f  ? 1.0f
+                      : swivel_ramped[f][i] < -0.05f ? -1.0f
+                                                     : 0.0f,
+                      forced != 0.0f, moving ? kMinSwivelGainM : 0.0f, ramp_only ? kRampOnlyClearM : 0.002f);
+          if (way == 0 && !(choose_branch && continued[f][i] && ctx.options.avoid_collisions)) break;
+          if (way == 1) {
+            // The previous-wrist start is kept where the frame ends no deeper (within
+            // kBranchDepthSlackM) and its wrist nearer the previous frame's finished wrist.
+            const glm::vec3& before = final_wrist[f - 1][i];
+            const bool keep = frame_depth() <= depth_usual + kBranchDepthSlackM &&
+                              glm::length(pb.position(hand_joint) - before) <
+                                  glm::length(pb_usual.position(hand_joint) - before);
+            if (!keep) {
+              pb = pb_usual;
+              t = t_usual;
+              solved[f][i] = solved_usual;
+              push_offsets[f][i] = push_usual;
+              turns[f][i] = turn_usual;
+              swivel_fixes[f][i] = fix_usual;
+              out->pushes = pushes_usual;
             }
-            // Pushed out of the hand only, the forearms then crossed instead (50 corpus signs
-            // deeper, forearm in forearm): the forearms count in the same push.
-            Penetration forearms = arm_penetration(ctx.body, pb, plan.side, false, false, true);
-            if (forearms.depth_m > pen.depth_m) {
-              pen.depth_m = forearms.depth_m;
-              pen.push_dir = forearms.push_dir;
-            }
           }
-          if (pen.depth_m <= 0.002f) break;
-          // Out along the escape direction and a little forward (away from the body), which the
-          // arm can always follow.
-          t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
-          if (attempt == 0) ++out->pushes;
         }
-        push_offsets[f][i] = t.point - start_point;
-        turns[f][i] = glm::quat(1, 0, 0, 0);
-        swivel_fixes[f][i] = 0.0f;
-        const float forced = forced_side[f][i];
-        if (ctx.options.avoid_collisions)
-          clear_arm(plan, check_hand, &t, h, &pb, &turns[f][i], &swivel_fixes[f][i],
-                    forced != 0.0f                 ? forced
-                    : swivel_ramped[f][i] > 0.05f  ? 1.0f
-                    : swivel_ramped[f][i] < -0.05f ? -1.0f
-                                                   : 0.0f,
-                    forced != 0.0f, moving ? kMinSwivelGainM : 0.0f, ramp_only ? kRampOnlyClearM : 0.002f);
+        final_wrist[f][i] = pb.position(hand_joint);
       }
       pb.local_rotations(&out->rotations[static_cast<size_t>(f) * J]);
       out->exempt[f] = exempt;
@@ -2640,6 +2719,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     const auto first_pushes = push_offsets;
     const auto first_solved = solved;
     const auto first_continued = continued;
+    const auto first_final_wrist = final_wrist;
     const SignMotion first_out = *out;
     // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
     // largest wrist or elbow step in one frame.
@@ -2667,6 +2747,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     const float free_depth = best.depth_m;
     SignMotion best_out = *out;
     auto best_solved = solved;
+    auto best_continued = continued;
     for (float side : {1.0f, -1.0f}) {
       frames = first_frames;
       turns = first_turns;
@@ -2675,6 +2756,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       push_offsets = first_pushes;
       solved = first_solved;
       continued = first_continued;
+      final_wrist = first_final_wrist;
       *out = first_out;
       for (const SideRun& r : runs)
         for (int g = r.first; g <= r.last; ++g) forced_side[g][r.hand] = side;
@@ -2688,12 +2770,19 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         best = sc;
         best_out = *out;
         best_solved = solved;
+        best_continued = continued;
       }
     }
     *out = std::move(best_out);
     solved = std::move(best_solved);
+    // The kept side's wrist flips (synthesize_sign_motion counts them to decide the second solve).
+    continued = std::move(best_continued);
   };
   choose_run_sides_and_ramp();
+  if (continued_frames) {
+    *continued_frames = 0;
+    for (const auto& c : continued) *continued_frames += c[0] + c[1];
+  }
   out->orientation_error_rad.assign(frames.size(), 0.0f);
   for (size_t f = 0; f < frames.size(); ++f)
     for (int i = 0; i < 2; ++i)
@@ -2756,7 +2845,49 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   // the clip is the same to the bit), also in the second solve at a stretched timing below.
   ArmSolveMemo arm_solves;
   std::vector<StepSpan> spans;
-  if (!synthesize_sign_motion_timed(ctx, sign, where, {}, out, errors, &spans)) return false;
+  int continued_frames = 0;
+  if (!synthesize_sign_motion_timed(ctx, sign, where, {}, false, out, errors, &spans, &continued_frames))
+    return false;
+  // A sign with frames that continue a wrist flip is solved once more with each such frame's
+  // branch chosen on the finished frame (solve_frames: the usual start or the previous wrist's).
+  // A choice no deeper at its own frame still sank neighbouring frames (the ramps carry the kept
+  // branch's pushes and swivel fixes into them: HOUSE1A^ 1.0 -> 14.4 mm at frames that continue
+  // nothing) and alternated between frames, so the whole sign decides: the second solve is kept
+  // where the sign's deepest frame is no deeper (kBranchSignSlackM) and its largest arm step
+  // (clip_steps.h) smaller. The cost: a second solve of the signs with such frames (3 of the
+  // lexicon's 141; 450 of the HamNoSys corpus's 4,481).
+  bool choose_branch = false;
+  if (continued_frames > 0 && ctx.options.avoid_collisions) {
+    SignMotion chosen;
+    std::vector<SynthesisError> repeated;
+    std::vector<StepSpan> chosen_spans;
+    if (synthesize_sign_motion_timed(ctx, sign, where, {}, true, &chosen, &repeated, &chosen_spans, nullptr) &&
+        chosen_spans.size() == spans.size()) {
+      // Measured as the clip has them by default: after the elbow's path is made continuous
+      // (synthesize.cpp, elbow_path.h), which moves the elbows of a sign whose wrist changes side.
+      // Measured without it, 4 signs newly stepped over 100 mm in a frame (wynajmować
+      // 83 -> 173 mm). Also where the options switch the elbow's path off: the solve is then the
+      // same one, with and without it (CorpusSynthesis.CarryingAnElbowRound... compares the two).
+      auto depth_and_step = [&](const SignMotion& m, float* step) {
+        Clip c;
+        c.fps = ctx.options.fps;
+        c.frame_count = m.frame_count;
+        c.rotations = m.rotations;
+        continue_elbow_paths(ctx.rig, &ctx.body, c.fps, c.frame_count, &c.rotations);
+        *step = measure_frame_steps(ctx.rig, c).step_m;
+        std::string what;
+        return max_penetration(ctx, c.rotations.data(), c.frame_count, m.exempt.data(), &what, nullptr);
+      };
+      float step = 0.0f, chosen_step = 0.0f;
+      const float depth = depth_and_step(*out, &step);
+      const float chosen_depth = depth_and_step(chosen, &chosen_step);
+      if (chosen_depth <= depth + kBranchSignSlackM && chosen_step < step) {
+        *out = std::move(chosen);
+        spans = std::move(chosen_spans);
+        choose_branch = true;
+      }
+    }
+  }
   // A faster signer still has a human hand: the speed factor divides a step's time, so along
   // the same path its speeds grow with the factor and its accelerations with its square. Above
   // speed 1, a step whose wrist, elbow or a fingertip moves faster than kStepHandPeakSpeedMPerS
@@ -2791,7 +2922,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     SignMotion slower;
     std::vector<SynthesisError> repeated;
     std::vector<StepSpan> again;
-    if (!synthesize_sign_motion_timed(ctx, sign, where, states, &slower, &repeated, &again) ||
+    if (!synthesize_sign_motion_timed(ctx, sign, where, states, choose_branch, &slower, &repeated, &again, nullptr) ||
         again.size() != spans.size())
       return true;
     // Not exactly 1/duration^2 (above): a stretch that measures no better is not taken.
