@@ -132,6 +132,11 @@ bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton,
   const glm::quat head_rest_world =
       rig.head >= 0 ? rest_world_rotation(skeleton, rig.head) : glm::quat(1, 0, 0, 0);
   const int blink_l = channel_index("eyeBlinkLeft"), blink_r = channel_index("eyeBlinkRight");
+  // The eyes' rest rotations in the world depend on the skeleton alone: once per clip.
+  const int eyes[2] = {rig.left_eye, rig.right_eye};
+  glm::quat eye_rest_worlds[2] = {glm::quat(1, 0, 0, 0), glm::quat(1, 0, 0, 0)};
+  for (int e = 0; e < 2; ++e)
+    if (eyes[e] >= 0) eye_rest_worlds[e] = rest_world_rotation(skeleton, eyes[e]);
 
   for (int f = 0; f < clip.frame_count; ++f) {
     const double t = f / double(clip.fps);
@@ -192,13 +197,16 @@ bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton,
       const glm::quat head_relative = head_world * glm::inverse(head_rest_world);
       const glm::vec3 look = gaze_direction(cue ? cue->nonmanual.gaze : std::string());
       const glm::quat in_head = gaze_rotation(head_relative, look);
-      for (int eye : {rig.left_eye, rig.right_eye}) {
+      for (int e = 0; e < 2; ++e) {
+        const int eye = eyes[e];
         if (eye < 0) continue;
-        const glm::quat eye_rest_world = rest_world_rotation(skeleton, eye);
-        const glm::quat eye_world = head_relative * in_head * eye_rest_world;
+        const glm::quat eye_world = head_relative * in_head * eye_rest_worlds[e];
         const int parent = skeleton.joints[std::size_t(eye)].parent;
-        const glm::quat parent_world =
-            parent >= 0 ? world_rotation(skeleton, locals, parent) : glm::quat(1, 0, 0, 0);
+        // An eye's parent is the head on a humanoid: its world rotation is head_world, the same
+        // product of the same rotations (the eyes written here are not among them).
+        const glm::quat parent_world = parent == rig.head ? head_world
+                                       : parent >= 0      ? world_rotation(skeleton, locals, parent)
+                                                          : glm::quat(1, 0, 0, 0);
         locals[eye] = glm::normalize(glm::inverse(parent_world) * eye_world);
       }
     }

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
+#include <vector>
 
 namespace sw::synthesis {
 namespace {
@@ -581,18 +581,66 @@ thread_local ArmSolveMemo* active_memo = nullptr;
 }  // namespace
 
 // Every input of a free solve, as bits (so -0 and +0, or two NaNs, are told apart only by
-// being different bits: a miss, solved as before).
+// being different bits: a miss, solved as before). A flat open-addressing table (entries in the
+// order solved, slots holding entry indices), not a node per pose: the node allocations and the
+// map's bookkeeping were most of the memo's own cost (about 12 M instructions of the lexicon's
+// 1.6 G). A table outlives its memo on a spare list of the thread, emptied and reused by the next
+// memo (the next sign), so its storage is allocated once, not per sign.
 struct ArmSolveMemo::Table {
   using Key = std::array<std::uint32_t, 24>;
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-      std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the words
-      for (std::uint32_t w : k) h = (h ^ w) * 1099511628211ull;
-      return static_cast<std::size_t>(h);
-    }
+  struct Entry {
+    Key key;
+    ArmPose pose;
   };
-  std::unordered_map<Key, ArmPose, KeyHash> poses;
+  std::vector<Entry> entries;
+  std::vector<std::uint32_t> hashes;  // per entry, checked before the key
+  std::vector<std::int32_t> slots;    // entry index or -1; a power of two, at most half full
   std::size_t hits = 0;
+
+  static std::uint32_t hash_of(const Key& k) {
+    std::uint32_t h = 2166136261u;  // FNV-1a over the words
+    for (std::uint32_t w : k) h = (h ^ w) * 16777619u;
+    return h;
+  }
+
+  void clear() {
+    entries.clear();
+    hashes.clear();
+    if (slots.empty()) slots.assign(256, -1);
+    else std::fill(slots.begin(), slots.end(), -1);
+    hits = 0;
+  }
+
+  // The remembered pose for `key`, or null.
+  const ArmPose* find(const Key& key, std::uint32_t h) const {
+    const std::size_t mask = slots.size() - 1;
+    for (std::size_t i = h & mask;; i = (i + 1) & mask) {
+      const std::int32_t e = slots[i];
+      if (e < 0) return nullptr;
+      const std::size_t at = static_cast<std::size_t>(e);
+      if (hashes[at] == h && entries[at].key == key) return &entries[at].pose;
+    }
+  }
+
+  // A key find() did not know.
+  void add(const Key& key, std::uint32_t h, const ArmPose& pose) {
+    if (2 * (entries.size() + 1) > slots.size()) {
+      std::vector<std::int32_t> bigger(2 * slots.size(), -1);
+      const std::size_t mask = bigger.size() - 1;
+      for (std::size_t e = 0; e < hashes.size(); ++e) {
+        std::size_t i = hashes[e] & mask;
+        while (bigger[i] >= 0) i = (i + 1) & mask;
+        bigger[i] = static_cast<std::int32_t>(e);
+      }
+      slots.swap(bigger);
+    }
+    const std::size_t mask = slots.size() - 1;
+    std::size_t i = h & mask;
+    while (slots[i] >= 0) i = (i + 1) & mask;
+    slots[i] = static_cast<std::int32_t>(entries.size());
+    entries.push_back(Entry{key, pose});
+    hashes.push_back(h);
+  }
 
   static Key key_of(const Rig& rig, Side side, const ArmTarget& t) {
     Key k{};
@@ -621,8 +669,30 @@ struct ArmSolveMemo::Table {
   }
 };
 
-ArmSolveMemo::ArmSolveMemo() : table_(std::make_unique<Table>()), outer_(active_memo) { active_memo = this; }
-ArmSolveMemo::~ArmSolveMemo() { active_memo = outer_; }
+namespace {
+
+// Tables of memos that have ended, kept for the next memo on this thread.
+thread_local std::vector<std::unique_ptr<ArmSolveMemo::Table>> spare_tables;
+
+std::unique_ptr<ArmSolveMemo::Table> take_table() {
+  std::unique_ptr<ArmSolveMemo::Table> t;
+  if (spare_tables.empty()) {
+    t = std::make_unique<ArmSolveMemo::Table>();
+  } else {
+    t = std::move(spare_tables.back());
+    spare_tables.pop_back();
+  }
+  t->clear();
+  return t;
+}
+
+}  // namespace
+
+ArmSolveMemo::ArmSolveMemo() : table_(take_table()), outer_(active_memo) { active_memo = this; }
+ArmSolveMemo::~ArmSolveMemo() {
+  active_memo = outer_;
+  spare_tables.push_back(std::move(table_));
+}
 std::size_t ArmSolveMemo::hits() const { return table_->hits; }
 
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
@@ -630,13 +700,13 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
   if (!active_memo || t.previous) return solve_arm_uncached(rig, side, t);
   ArmSolveMemo::Table& table = *active_memo->table_;
   const ArmSolveMemo::Table::Key key = ArmSolveMemo::Table::key_of(rig, side, t);
-  const auto found = table.poses.find(key);
-  if (found != table.poses.end()) {
+  const std::uint32_t h = ArmSolveMemo::Table::hash_of(key);
+  if (const ArmPose* found = table.find(key, h)) {
     ++table.hits;
-    return found->second;
+    return *found;
   }
   const ArmPose pose = solve_arm_uncached(rig, side, t);
-  table.poses.emplace(key, pose);
+  table.add(key, h, pose);
   return pose;
 }
 

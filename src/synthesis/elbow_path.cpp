@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "synthesis/subset_pose.h"
+
 namespace sw::synthesis {
 
 namespace {
@@ -120,7 +122,7 @@ void turn_arm(const Rig& rig, const ArmRig& arm, const glm::quat& turn, const Po
 // tests' 100 mm and 56 mm at 30 fps), 1 on a bound.
 float elbow_roughness(const Rig& rig, Side side, float fps, int frame_count,
                       const std::vector<glm::quat>& rotations) {
-  PoseBuilder pb(rig);
+  SubsetPose pb(rig, {rig.arms[side].lower});  // the elbow's position only
   float step = 0.0f, change = 0.0f;
   glm::vec3 previous{0.0f}, previous_step{0.0f};
   for (int f = 0; f < frame_count; ++f) {
@@ -255,13 +257,16 @@ bool centred_arm_path(const Rig& rig, const BodyModel* body, Side s, float fps, 
   const float max_change_m = kSwingMaxAccelMPerS2 / (fps * fps);
   const ArmRig& arm = rig.arms[s];
   std::vector<glm::vec3> shoulder(frame_count), elbow(frame_count), wrist(frame_count);
-  PoseBuilder pb(rig);
-  for (int f = 0; f < frame_count; ++f) {
-    pb.set_from_local(&(*rotations)[static_cast<size_t>(f) * J]);
-    shoulder[f] = pb.position(arm.upper);
-    elbow[f] = pb.position(arm.lower);
-    wrist[f] = pb.position(arm.hand);
+  {
+    SubsetPose arm_joints(rig, {arm.upper, arm.lower, arm.hand});  // positions only
+    for (int f = 0; f < frame_count; ++f) {
+      arm_joints.set_from_local(&(*rotations)[static_cast<size_t>(f) * J]);
+      shoulder[f] = arm_joints.position(arm.upper);
+      elbow[f] = arm_joints.position(arm.lower);
+      wrist[f] = arm_joints.position(arm.hand);
+    }
   }
+  PoseBuilder pb(rig);
   std::vector<float> offset(frame_count, 0.0f);
   bool any = false;
   for (int k = 1; k < frame_count; ++k) {
@@ -344,10 +349,14 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
                          std::vector<glm::quat>* rotations) {
   if (frame_count < 2 || fps <= 0.0f) return 0;
   // One pass to find the arms whose elbow swings faster than the trigger at all (most clips have
-  // none, and are left as they are at the cost of one pose per frame).
+  // none, and are left as they are at the cost of posing the arms' joints once per frame). It
+  // reads only the shoulder joints', elbows' and wrists' positions: those and their ancestors are
+  // posed (SubsetPose, the full pose's positions to the bit), not the fingers, legs and head (the
+  // lexicon, each sign from rest and back: the pass 88.8 -> 18.8 M instructions, of 1.66 G).
   bool swings[2] = {false, false};
   {
-    PoseBuilder pb(rig);
+    SubsetPose pb(rig, {rig.arms[kLeft].upper, rig.arms[kLeft].lower, rig.arms[kLeft].hand,
+                        rig.arms[kRight].upper, rig.arms[kRight].lower, rig.arms[kRight].hand});
     glm::vec3 previous[2];
     const float trigger_m = kSwingTriggerMPerS / fps;
     for (int f = 0; f < frame_count; ++f) {

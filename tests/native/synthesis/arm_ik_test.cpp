@@ -511,5 +511,33 @@ TEST(SynthesisArmIk, TheArmSolveMemoAnswersOnlyTheSameSolveWithTheSamePose) {
   EXPECT_EQ(later.hits(), 0u);
 }
 
+// The memo's table grows as a sign asks more solves (a new table holds 128): every one of
+// 300 different solves is answered on its second asking with the pose solved the first time, and
+// none is answered for another target.
+TEST(SynthesisArmIk, TheArmSolveMemoKeepsEverySolveAsItsTableGrows) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+  const ArmRig& a = rig.arms[kRight];
+  constexpr int kSolves = 300;
+  auto target = [&](int i) {
+    ArmTarget t;
+    t.point = rig.bind_pos[a.upper] + 0.3f * rig.forward - 0.2f * rig.up +
+              (0.0005f * static_cast<float>(i)) * rig.left;
+    t.contact_offset = 0.18f * a.finger_dir;
+    return t;
+  };
+  ArmSolveMemo memo;
+  std::vector<ArmPose> first;
+  for (int i = 0; i < kSolves; ++i) first.push_back(solve_arm(rig, kRight, target(i)));
+  EXPECT_EQ(memo.hits(), 0u);
+  for (int i = 0; i < kSolves; ++i) {
+    const ArmPose again = solve_arm(rig, kRight, target(i));
+    EXPECT_EQ(std::memcmp(&again, &first[static_cast<size_t>(i)], sizeof(ArmPose)), 0) << i;
+  }
+  EXPECT_EQ(memo.hits(), static_cast<std::size_t>(kSolves));
+}
+
 }  // namespace
 }  // namespace sw::synthesis
