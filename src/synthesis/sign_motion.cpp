@@ -2727,20 +2727,12 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       float depth_m, step_m;
     };
     auto score = [&]() {
-      Score sc{max_penetration(ctx, out->rotations.data(), n, out->exempt.data(), nullptr, nullptr), 0.0f};
-      PoseBuilder pb(rig);
-      std::array<glm::vec3, 4> prev{}, cur{};
-      for (int f = 0; f < n; ++f) {
-        pb.set_from_local(&out->rotations[static_cast<size_t>(f) * J]);
-        for (int s = 0; s < 2; ++s) {
-          cur[2 * s] = pb.position(rig.arms[s].hand);
-          cur[2 * s + 1] = pb.position(rig.arms[s].lower);
-        }
-        if (f > 0)
-          for (size_t k = 0; k < cur.size(); ++k) sc.step_m = std::max(sc.step_m, glm::length(cur[k] - prev[k]));
-        prev = cur;
-      }
-      return sc;
+      Clip c;
+      c.fps = fps;
+      c.frame_count = n;
+      c.rotations = out->rotations;
+      return Score{max_penetration(ctx, out->rotations.data(), n, out->exempt.data(), nullptr, nullptr),
+                   measure_frame_steps(rig, c).step_m};
     };
     ramp_rounds();
     Score best = score();
