@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <sstream>
 
@@ -62,6 +63,26 @@ using Worst = FrameSteps;
 using Track = StepTrack;
 Worst measure(const Rig& rig, const Clip& clip, int first = 0, int last = -1, Track track = Track::Arms) {
   return measure_frame_steps(rig, clip, first, last, track);
+}
+
+// The wrist joint within its limits in every frame of `clip`: the hand's local rotation (flexion
+// and deviation; the forearm carries the twist) bent from its bind at most as far as the largest
+// flexion and deviation together allow (+0.01 rad for rounding).
+void expect_wrists_within_their_bend(const Rig& rig, const Clip& clip, const std::string& label,
+                                     std::initializer_list<Side> sides = {kLeft, kRight}) {
+  const ArmLimits& lim = arm_limits();
+  const float flex = std::max(lim.wrist_flex, lim.wrist_ext);
+  const float dev = std::max(lim.radial_dev, lim.ulnar_dev);
+  const float max_bend = 2.0f * std::acos(std::cos(0.5f * flex) * std::cos(0.5f * dev));
+  for (Side s : sides) {
+    const int hand = rig.arms[s].hand;
+    for (int f = 0; f < clip.frame_count; ++f) {
+      const glm::quat rel =
+          glm::conjugate(rig.bind_local_rot[hand]) * clip.rotations[static_cast<size_t>(f) * rig.joint_count + hand];
+      const float bend = 2.0f * std::acos(std::min(1.0f, std::fabs(rel.w)));
+      EXPECT_LE(bend, max_bend + 0.01f) << label << (s == kLeft ? " left" : " right") << " wrist at frame " << f;
+    }
+  }
 }
 
 // Bounds in millimetres: per-frame step, change of the step.
@@ -775,17 +796,7 @@ TEST_P(MotionSmoothness, AFingerAtTheEarArcingDownWhileItTurnsCarriesTheElbowRou
   // rotation (flexion and deviation; the forearm carries the twist) bent from its bind at most
   // as far as the largest flexion and deviation together allow. Carrying the elbow round with
   // the hand's orientation kept in space bent this wrist 2.8 rad (project avatar).
-  const ArmLimits& lim = arm_limits();
-  const float flex = std::max(lim.wrist_flex, lim.wrist_ext);
-  const float dev = std::max(lim.radial_dev, lim.ulnar_dev);
-  const float max_bend = 2.0f * std::acos(std::cos(0.5f * flex) * std::cos(0.5f * dev));
-  const int hand = rig_.arms[kRight].hand;
-  for (int f = 0; f < r.clip.frame_count; ++f) {
-    const glm::quat rel = glm::conjugate(rig_.bind_local_rot[hand]) *
-                          r.clip.rotations[static_cast<size_t>(f) * rig_.joint_count + hand];
-    const float bend = 2.0f * std::acos(std::min(1.0f, std::fabs(rel.w)));
-    EXPECT_LE(bend, max_bend + 0.01f) << GetParam() << " right wrist at frame " << f;
-  }
+  expect_wrists_within_their_bend(rig_, r.clip, GetParam(), {kRight});
 }
 
 // Both flat hands at the shoulders, fingertips touching them, that turn down and arc down and
@@ -811,19 +822,7 @@ TEST_P(MotionSmoothness, ShoulderTouchArcingDownKeepsItsElbowOnOneSideOfTheBody)
   RecordProperty("worst_step_mm", std::to_string(w.step_m * 1000.0f) + " " + w.step_what);
   RecordProperty("worst_change_mm", std::to_string(w.change_m * 1000.0f) + " " + w.change_what);
   // Both wrists within the joint's limits in every frame (as the test above).
-  const ArmLimits& lim = arm_limits();
-  const float flex = std::max(lim.wrist_flex, lim.wrist_ext);
-  const float dev = std::max(lim.radial_dev, lim.ulnar_dev);
-  const float max_bend = 2.0f * std::acos(std::cos(0.5f * flex) * std::cos(0.5f * dev));
-  for (Side s : {kLeft, kRight}) {
-    const int hand = rig_.arms[s].hand;
-    for (int f = 0; f < r.clip.frame_count; ++f) {
-      const glm::quat rel = glm::conjugate(rig_.bind_local_rot[hand]) *
-                            r.clip.rotations[static_cast<size_t>(f) * rig_.joint_count + hand];
-      const float bend = 2.0f * std::acos(std::min(1.0f, std::fabs(rel.w)));
-      EXPECT_LE(bend, max_bend + 0.01f) << GetParam() << " wrist " << s << " at frame " << f;
-    }
-  }
+  expect_wrists_within_their_bend(rig_, r.clip, GetParam());
 }
 
 // Hands whose wrist flips and then turns through (sign_motion.cpp `continued`): with the wrist
@@ -862,17 +861,7 @@ TEST_P(MotionSmoothness, AWristTurningThroughAFlipAtAContactKeepsItsSideOfTheCon
     RecordProperty("largest_wrist_step_mm", std::to_string(step * 1000.0f));
     EXPECT_LT(step, 0.090f);
     EXPECT_LE(r.report.max_penetration_m, 0.005f);
-    const ArmLimits& lim = arm_limits();
-    const float max_bend = 2.0f * std::acos(std::cos(0.5f * std::max(lim.wrist_flex, lim.wrist_ext)) *
-                                            std::cos(0.5f * std::max(lim.radial_dev, lim.ulnar_dev)));
-    for (Side s : {kLeft, kRight}) {
-      const int hand = rig_.arms[s].hand;
-      for (int f = 0; f < r.clip.frame_count; ++f) {
-        const glm::quat rel = glm::conjugate(rig_.bind_local_rot[hand]) * r.clip.rotations[static_cast<size_t>(f) * J + hand];
-        const float bend = 2.0f * std::acos(std::min(1.0f, std::fabs(rel.w)));
-        EXPECT_LE(bend, max_bend + 0.01f) << "wrist " << s << " at frame " << f;
-      }
-    }
+    expect_wrists_within_their_bend(rig_, r.clip, GetParam());
   }
 }
 
