@@ -1597,7 +1597,7 @@ struct StepSpan {
 // `continued_frames` (optional) receives how many hand-frames continue a flip.
 bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignSpec& sign,
                                   const std::string& where, const std::vector<int>& step_states,
-                                  bool choose_branch, SignMotion* out, std::vector<SynthesisError>* errors,
+                                  bool choose_branch, SignMotion* result, std::vector<SynthesisError>* errors,
                                   std::vector<StepSpan>* spans, int* continued_frames) {
   const Rig& rig = ctx.rig;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
@@ -1814,7 +1814,28 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   auto same_states = [](const FrameTarget& a, const FrameTarget& b) {
     return std::memcmp(a.hand.data(), b.hand.data(), sizeof(a.hand)) == 0;
   };
-  std::vector<FrameTarget> frames;
+  // A sign's solve state, per frame (and hand) and the clip solved from it: what a second try of
+  // the solve (another swivel side for a run of fixes, another rule) starts from and what it is
+  // compared against. One struct, so a try is one copy and a restore one assignment: restored by
+  // hand field by field, a field could be forgotten (stop 19's merge added final_wrist to one).
+  struct ClipSolveState {
+    std::vector<FrameTarget> frames;
+    // The hand turns and swivel offsets clear_arm applied, per frame and hand (identity / 0: none).
+    std::vector<std::array<glm::quat, 2>> turns;
+    std::vector<std::array<float, 2>> swivel_fixes;
+    // The swivel offsets the ramp rounds added to each frame so far (clear_arm's preferred side).
+    std::vector<std::array<float, 2>> swivel_ramped;
+    // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
+    std::vector<std::array<glm::vec3, 2>> push_offsets;
+    // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
+    std::vector<std::array<ArmPose, 2>> solved;
+    std::vector<std::array<char, 2>> continued;
+    // Each frame's finished wrist per hand (after its pushes and arm clearing).
+    std::vector<std::array<glm::vec3, 2>> final_wrist;
+    SignMotion out;
+  };
+  ClipSolveState st;
+  std::vector<FrameTarget>& frames = st.frames;
   auto add_hold = [&](float seconds) {
     int n = std::max(1, static_cast<int>(std::lround(seconds * fps / speed)));
     for (int i = 0; i < n; ++i) frames.push_back(frames.back());
@@ -2148,6 +2169,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // Solve every frame: IK per hand (fixed swivel along the path, so the elbow moves smoothly),
   // fingers by FK, then push a hand out of the body if it entered it unintentionally.
   const int J = rig.joint_count;
+  st.out = std::move(*result);
+  SignMotion* const out = &st.out;
   out->frame_count = static_cast<int>(frames.size());
   out->rotations.resize(static_cast<size_t>(out->frame_count) * J);
   out->exempt.assign(out->frame_count, 0);
@@ -2227,14 +2250,18 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   PoseBuilder rest(rig);
   rest.set_from_local(ctx.rest_locals.data());
   // The hand turns and swivel offsets clear_arm applied, per frame and hand (identity / 0: none).
-  std::vector<std::array<glm::quat, 2>> turns(frames.size());
-  std::vector<std::array<float, 2>> swivel_fixes(frames.size());
+  auto& turns = st.turns;
+  turns.resize(frames.size());
+  auto& swivel_fixes = st.swivel_fixes;
+  swivel_fixes.resize(frames.size());
   // The swivel offsets the ramp rounds added to each frame so far (clear_arm's preferred side).
-  std::vector<std::array<float, 2>> swivel_ramped(frames.size(), {0.0f, 0.0f});
+  auto& swivel_ramped = st.swivel_ramped;
+  swivel_ramped.resize(frames.size(), {0.0f, 0.0f});
   // The side a run of swivel fixes is given as a whole (+1 / -1; 0: chosen per frame), per hand.
   std::vector<std::array<float, 2>> forced_side(frames.size(), {0.0f, 0.0f});
   // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
-  std::vector<std::array<glm::vec3, 2>> push_offsets(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
+  auto& push_offsets = st.push_offsets;
+  push_offsets.resize(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
   // A wrist that flips: where a hand's requested orientation is out of the wrist's reach, the
   // clamped wrist angles can change branch between two frames (twist and flexion from one limit
   // to the other: LEARN's pinched hand on its way to the forehead, the wrist 17 cm in a frame).
@@ -2260,13 +2287,16 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // deepened the far-side rest transitions by up to 2 mm).
   constexpr float kMinSwivelGainM = 0.001f;
   // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
-  std::vector<std::array<ArmPose, 2>> solved(frames.size());
-  std::vector<std::array<char, 2>> continued(frames.size(), {0, 0});
+  auto& solved = st.solved;
+  solved.resize(frames.size());
+  auto& continued = st.continued;
+  continued.resize(frames.size(), {0, 0});
   // Each frame's finished wrist per hand (after its pushes and arm clearing), and how much deeper
   // than the usual start's a continued frame solved from the previous wrist may end (0.5 mm:
   // below the collision checks' rounding of a posed capsule, and a quarter of the 2 mm a push
   // lets stand).
-  std::vector<std::array<glm::vec3, 2>> final_wrist(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
+  auto& final_wrist = st.final_wrist;
+  final_wrist.resize(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
   constexpr float kBranchDepthSlackM = 0.0005f;
   auto wrist_change = [](const ArmPose& a, const ArmPose& b) {
     return std::max({std::fabs(a.twist_rad - b.twist_rad), std::fabs(a.wrist_dev_rad - b.wrist_dev_rad),
@@ -2712,15 +2742,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       return;
     }
     // The state after the first solve, each side's rounds start from it.
-    const std::vector<FrameTarget> first_frames = frames;
-    const auto first_turns = turns;
-    const auto first_fixes = swivel_fixes;
-    const auto first_ramped = swivel_ramped;
-    const auto first_pushes = push_offsets;
-    const auto first_solved = solved;
-    const auto first_continued = continued;
-    const auto first_final_wrist = final_wrist;
-    const SignMotion first_out = *out;
+    const ClipSolveState first = st;
     // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
     // largest wrist or elbow step in one frame.
     struct Score {
@@ -2735,21 +2757,11 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
                    measure_frame_steps(rig, c).step_m};
     };
     ramp_rounds();
-    Score best = score();
-    const float free_depth = best.depth_m;
-    SignMotion best_out = *out;
-    auto best_solved = solved;
-    auto best_continued = continued;
+    Score best_score = score();
+    const float free_depth = best_score.depth_m;
+    ClipSolveState best = st;
     for (float side : {1.0f, -1.0f}) {
-      frames = first_frames;
-      turns = first_turns;
-      swivel_fixes = first_fixes;
-      swivel_ramped = first_ramped;
-      push_offsets = first_pushes;
-      solved = first_solved;
-      continued = first_continued;
-      final_wrist = first_final_wrist;
-      *out = first_out;
+      st = first;
       for (const SideRun& r : runs)
         for (int g = r.first; g <= r.last; ++g) forced_side[g][r.hand] = side;
       solve_frames(&in_run);
@@ -2758,17 +2770,14 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       const Score sc = score();
       // No deeper (0.1 mm: rounding), a smaller step: a side that trades depth for steps is not
       // taken (kelner's, either side 7-12 mm deeper, both still 0.45 m steps).
-      if (sc.depth_m <= free_depth + 1e-4f && sc.step_m < best.step_m) {
-        best = sc;
-        best_out = *out;
-        best_solved = solved;
-        best_continued = continued;
+      if (sc.depth_m <= free_depth + 1e-4f && sc.step_m < best_score.step_m) {
+        best_score = sc;
+        best = st;
       }
     }
-    *out = std::move(best_out);
-    solved = std::move(best_solved);
-    // The kept side's wrist flips (synthesize_sign_motion counts them to decide the second solve).
-    continued = std::move(best_continued);
+    // The kept side's clip, arm poses and wrist flips (synthesize_sign_motion counts them to
+    // decide the second solve).
+    st = std::move(best);
   };
   choose_run_sides_and_ramp();
   if (continued_frames) {
@@ -2784,6 +2793,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   if (solver.turn.active())
     for (int f = 0; f < out->frame_count; ++f)
       apply_thorax_turn(rig, solver.turn, &out->rotations[static_cast<size_t>(f) * J]);
+  *result = std::move(st.out);
   return true;
 }
 
