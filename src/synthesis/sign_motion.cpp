@@ -1595,10 +1595,13 @@ struct StepSpan {
 // step's span into `spans`. choose_branch: a frame continuing a wrist flip is solved from the
 // previous wrist too, and that kept where it is no deeper and nearer (solve_frames);
 // `continued_frames` (optional) receives how many hand-frames continue a flip.
+// `usual_alternative` (optional): where the jam rule's clip was kept, the clip without the rule
+// (finished alike); otherwise an empty SignMotion.
 bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignSpec& sign,
                                   const std::string& where, const std::vector<int>& step_states,
                                   bool choose_branch, SignMotion* result, std::vector<SynthesisError>* errors,
-                                  std::vector<StepSpan>* spans, int* continued_frames) {
+                                  std::vector<StepSpan>* spans, int* continued_frames,
+                                  SignMotion* usual_alternative) {
   const Rig& rig = ctx.rig;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   Solver solver(ctx, errors, where);
@@ -2350,6 +2353,14 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // A continued frame's pose before its first way and after it (choose_branch, below); made once,
   // their buffers reused.
   PoseBuilder pb_start(rig), pb_usual(rig);
+  // A hand caught between two trunk or hand capsules (the hand at the chin: out of the head is
+  // into the torso and back) is pushed out of each in turn, and the way it finally leaves by
+  // depends on which was deepest at each attempt: it flipped between neighbouring frames (the
+  // corpus's cztery tygodnie temu, sign frames 21-23: (0.150, 0.005, -0.079), (-0.038, -0.039,
+  // -0.196), (-0.141, -0.068, -0.072) m, the wrist 25 cm in a frame). `any_jam`: some push in
+  // the solve went against the attempt before it; `jam_rule`: such a push goes along the sum of
+  // the two ways and forward (away from the body) instead (the choice after the ramps below).
+  bool jam_rule = false, any_jam = false;
   auto solve_frames = [&](const std::vector<char>* redo) {
     if (!redo || (*redo)[0]) {
       out->max_reach_error_m = 0.0f;
@@ -2465,6 +2476,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
             t.start_at_previous_wrist = true;
             t.previous_wrist = final_wrist[f - 1][i];
           }
+          glm::vec3 last_push_dir(0.0f);
           for (int attempt = 0; attempt < 6; ++attempt) {
             ArmPose ap = solve_arm(rig, plan.side, t);
             if (attempt == 0) {
@@ -2522,7 +2534,13 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
             if (pen.depth_m <= 0.002f) break;
             // Out along the escape direction and a little forward (away from the body), which the
             // arm can always follow.
-            t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
+            glm::vec3 dir = pen.push_dir;
+            if (glm::dot(dir, last_push_dir) < 0.0f) {
+              if (jam_rule) dir = safe_normalize(dir + last_push_dir + rig.forward, rig.forward);
+              any_jam = true;
+            }
+            last_push_dir = dir;
+            t.point += dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
             if (attempt == 0) ++out->pushes;
           }
           push_offsets[f][i] = t.point - start_point;
@@ -2584,6 +2602,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       }
     }
   };
+  // The state before the first solve: the clip is solved again from it with the jam rule.
+  const ClipSolveState start = st;
   solve_frames(nullptr);
   // A turn decided frame by frame starts (and ends) at once: the hand would jump (a 60 degree
   // turn about a fingertip moves the wrist 17 cm in one frame). Ramp every turn in and out over
@@ -2708,6 +2728,19 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // smaller. Scored after the ramps: the depth a forced side leaves frame by frame foretold the
   // ramped clip's badly (a side at most 1 mm deeper at any frame before the ramps sank 6 corpus
   // signs by over 2 mm after them). Runs whose fixes share a side, most, cost nothing.
+  // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
+  // largest wrist or elbow step in one frame.
+  struct Score {
+    float depth_m, step_m;
+  };
+  auto score = [&]() {
+    Clip c;
+    c.fps = fps;
+    c.frame_count = out->frame_count;
+    c.rotations = out->rotations;
+    return Score{max_penetration(ctx, out->rotations.data(), c.frame_count, out->exempt.data(), nullptr, nullptr),
+                 measure_frame_steps(rig, c).step_m};
+  };
   auto choose_run_sides_and_ramp = [&]() {
     const int n = out->frame_count;
     struct SideRun {
@@ -2743,19 +2776,6 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     }
     // The state after the first solve, each side's rounds start from it.
     const ClipSolveState first = st;
-    // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
-    // largest wrist or elbow step in one frame.
-    struct Score {
-      float depth_m, step_m;
-    };
-    auto score = [&]() {
-      Clip c;
-      c.fps = fps;
-      c.frame_count = n;
-      c.rotations = out->rotations;
-      return Score{max_penetration(ctx, out->rotations.data(), n, out->exempt.data(), nullptr, nullptr),
-                   measure_frame_steps(rig, c).step_m};
-    };
     ramp_rounds();
     Score best_score = score();
     const float free_depth = best_score.depth_m;
@@ -2780,20 +2800,59 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     st = std::move(best);
   };
   choose_run_sides_and_ramp();
+  // Where a push went against the one before it, the whole clip is solved again with the jam
+  // rule (one way out for the caught hand: the two pushes' sum and forward) and kept only where
+  // the ramped clip is no deeper (0.1 mm: rounding) and its largest wrist or elbow step smaller.
+  // Chosen per frame (the shallower end of the two push loops, or the shorter push), 37 corpus
+  // signs sank by over 2 mm: a frame's depth before the ramps does not foretell the ramped
+  // clip's (as ramp-side's sides). Measured (docs/SYNTHESIS.md, push-side): cztery tygodnie temu
+  // 45.1 mm deep and a 489 mm step -> 11.3 and 390; HamNoSys corpus over 5 mm 185 -> 133.
+  // The choice sees the sign's own frames only: where the jam rule's clip is kept, the usual one
+  // goes back too (`usual_alternative`), and the phrase compares the two with the transitions it
+  // builds next to the sign (synthesize.cpp), which start from a changed first frame.
+  bool alternative = false;
+  ClipSolveState usual_state;
+  if (any_jam && ctx.options.avoid_collisions) {
+    const Score usual = score();
+    usual_state = std::move(st);
+    st = start;
+    jam_rule = true;
+    solve_frames(nullptr);
+    choose_run_sides_and_ramp();
+    jam_rule = false;
+    const Score jam = score();
+    if (jam.depth_m <= usual.depth_m + 1e-4f && jam.step_m < usual.step_m)
+      alternative = usual_alternative != nullptr;
+    else
+      st = std::move(usual_state);
+  }
   if (continued_frames) {
+    // With both clips handed back, both clips' (the caller's second solve is for either).
     *continued_frames = 0;
     for (const auto& c : continued) *continued_frames += c[0] + c[1];
+    if (alternative)
+      for (const auto& c : usual_state.continued) *continued_frames += c[0] + c[1];
   }
-  out->orientation_error_rad.assign(frames.size(), 0.0f);
-  for (size_t f = 0; f < frames.size(); ++f)
-    for (int i = 0; i < 2; ++i)
-      if (plans[i].active)
-        out->orientation_error_rad[f] = std::max(out->orientation_error_rad[f], solved[f][i].orientation_error_rad);
-  // Solved in the thorax frame: the clip's frames carry the turn in the trunk chain.
-  if (solver.turn.active())
-    for (int f = 0; f < out->frame_count; ++f)
-      apply_thorax_turn(rig, solver.turn, &out->rotations[static_cast<size_t>(f) * J]);
-  *result = std::move(st.out);
+  auto finish = [&](ClipSolveState* s, SignMotion* m) {
+    s->out.orientation_error_rad.assign(s->frames.size(), 0.0f);
+    for (size_t f = 0; f < s->frames.size(); ++f)
+      for (int i = 0; i < 2; ++i)
+        if (plans[i].active)
+          s->out.orientation_error_rad[f] =
+              std::max(s->out.orientation_error_rad[f], s->solved[f][i].orientation_error_rad);
+    // Solved in the thorax frame: the clip's frames carry the turn in the trunk chain.
+    if (solver.turn.active())
+      for (int f = 0; f < s->out.frame_count; ++f)
+        apply_thorax_turn(rig, solver.turn, &s->out.rotations[static_cast<size_t>(f) * J]);
+    *m = std::move(s->out);
+  };
+  finish(&st, result);
+  if (usual_alternative) {
+    if (alternative)
+      finish(&usual_state, usual_alternative);
+    else
+      *usual_alternative = SignMotion{};
+  }
   return true;
 }
 
@@ -2842,13 +2901,14 @@ std::vector<StepPeaks> step_peaks(const Rig& rig, const SignMotion& m,
 
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
-                            std::vector<SynthesisError>* errors) {
+                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative) {
   // The sign's arm solves asked again with the same target are answered from memory (arm_ik.h;
   // the clip is the same to the bit), also in the second solve at a stretched timing below.
   ArmSolveMemo arm_solves;
   std::vector<StepSpan> spans;
   int continued_frames = 0;
-  if (!synthesize_sign_motion_timed(ctx, sign, where, {}, false, out, errors, &spans, &continued_frames))
+  if (!synthesize_sign_motion_timed(ctx, sign, where, {}, false, out, errors, &spans, &continued_frames,
+                                    usual_alternative))
     return false;
   // A sign with frames that continue a wrist flip is solved once more with each such frame's
   // branch chosen on the finished frame (solve_frames: the usual start or the previous wrist's).
@@ -2863,7 +2923,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     SignMotion chosen;
     std::vector<SynthesisError> repeated;
     std::vector<StepSpan> chosen_spans;
-    if (synthesize_sign_motion_timed(ctx, sign, where, {}, true, &chosen, &repeated, &chosen_spans, nullptr) &&
+    SignMotion chosen_alternative;
+    if (synthesize_sign_motion_timed(ctx, sign, where, {}, true, &chosen, &repeated, &chosen_spans, nullptr,
+                                     usual_alternative ? &chosen_alternative : nullptr) &&
         chosen_spans.size() == spans.size()) {
       // Measured as the clip has them by default: after the elbow's path is made continuous
       // (synthesize.cpp, elbow_path.h), which moves the elbows of a sign whose wrist changes side.
@@ -2880,10 +2942,22 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         std::string what;
         return max_penetration(ctx, c.rotations.data(), c.frame_count, m.exempt.data(), &what, nullptr);
       };
-      float step = 0.0f, chosen_step = 0.0f;
-      const float depth = depth_and_step(*out, &step);
-      const float chosen_depth = depth_and_step(chosen, &chosen_step);
-      if (chosen_depth <= depth + kBranchSignSlackM && chosen_step < step) {
+      auto second_is_better = [&](const SignMotion& first, const SignMotion& second) {
+        float step = 0.0f, second_step = 0.0f;
+        const float depth = depth_and_step(first, &step);
+        const float second_depth = depth_and_step(second, &second_step);
+        return second_depth <= depth + kBranchSignSlackM && second_step < step;
+      };
+      // The clips without the jam rule (each solve's alternative, or its clip where it has none)
+      // are chosen between by the same rule, on their own: the caller weighs the jam rule's
+      // result against the clip the sign would have had without it.
+      if (usual_alternative && (usual_alternative->frame_count > 0 || chosen_alternative.frame_count > 0)) {
+        const SignMotion& first = usual_alternative->frame_count > 0 ? *usual_alternative : *out;
+        const SignMotion& second = chosen_alternative.frame_count > 0 ? chosen_alternative : chosen;
+        SignMotion kept = second_is_better(first, second) ? second : first;
+        *usual_alternative = std::move(kept);
+      }
+      if (second_is_better(*out, chosen)) {
         *out = std::move(chosen);
         spans = std::move(chosen_spans);
         choose_branch = true;
@@ -2924,13 +2998,16 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     SignMotion slower;
     std::vector<SynthesisError> repeated;
     std::vector<StepSpan> again;
-    if (!synthesize_sign_motion_timed(ctx, sign, where, states, choose_branch, &slower, &repeated, &again, nullptr) ||
+    SignMotion slower_alternative;
+    if (!synthesize_sign_motion_timed(ctx, sign, where, states, choose_branch, &slower, &repeated, &again, nullptr,
+                                      usual_alternative ? &slower_alternative : nullptr) ||
         again.size() != spans.size())
       return true;
     // Not exactly 1/duration^2 (above): a stretch that measures no better is not taken.
     std::vector<StepPeaks> slower_peaks = step_peaks(ctx.rig, slower, again, ctx.options.fps);
     if (worst_excess(slower_peaks) >= worst_excess(peaks)) return true;
     *out = std::move(slower);
+    if (usual_alternative) *usual_alternative = std::move(slower_alternative);
     spans = std::move(again);
     peaks = std::move(slower_peaks);
   }
