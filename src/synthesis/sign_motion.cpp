@@ -1595,10 +1595,13 @@ struct StepSpan {
 // step's span into `spans`. choose_branch: a frame continuing a wrist flip is solved from the
 // previous wrist too, and that kept where it is no deeper and nearer (solve_frames);
 // `continued_frames` (optional) receives how many hand-frames continue a flip.
+// `usual_alternative` (optional): where the jam rule's clip was kept, the clip without the rule
+// (finished alike); otherwise an empty SignMotion.
 bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignSpec& sign,
                                   const std::string& where, const std::vector<int>& step_states,
-                                  bool choose_branch, SignMotion* out, std::vector<SynthesisError>* errors,
-                                  std::vector<StepSpan>* spans, int* continued_frames) {
+                                  bool choose_branch, SignMotion* result, std::vector<SynthesisError>* errors,
+                                  std::vector<StepSpan>* spans, int* continued_frames,
+                                  SignMotion* usual_alternative) {
   const Rig& rig = ctx.rig;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   Solver solver(ctx, errors, where);
@@ -1814,7 +1817,28 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   auto same_states = [](const FrameTarget& a, const FrameTarget& b) {
     return std::memcmp(a.hand.data(), b.hand.data(), sizeof(a.hand)) == 0;
   };
-  std::vector<FrameTarget> frames;
+  // A sign's solve state, per frame (and hand) and the clip solved from it: what a second try of
+  // the solve (another swivel side for a run of fixes, another rule) starts from and what it is
+  // compared against. One struct, so a try is one copy and a restore one assignment: restored by
+  // hand field by field, a field could be forgotten (stop 19's merge added final_wrist to one).
+  struct ClipSolveState {
+    std::vector<FrameTarget> frames;
+    // The hand turns and swivel offsets clear_arm applied, per frame and hand (identity / 0: none).
+    std::vector<std::array<glm::quat, 2>> turns;
+    std::vector<std::array<float, 2>> swivel_fixes;
+    // The swivel offsets the ramp rounds added to each frame so far (clear_arm's preferred side).
+    std::vector<std::array<float, 2>> swivel_ramped;
+    // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
+    std::vector<std::array<glm::vec3, 2>> push_offsets;
+    // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
+    std::vector<std::array<ArmPose, 2>> solved;
+    std::vector<std::array<char, 2>> continued;
+    // Each frame's finished wrist per hand (after its pushes and arm clearing).
+    std::vector<std::array<glm::vec3, 2>> final_wrist;
+    SignMotion out;
+  };
+  ClipSolveState st;
+  std::vector<FrameTarget>& frames = st.frames;
   auto add_hold = [&](float seconds) {
     int n = std::max(1, static_cast<int>(std::lround(seconds * fps / speed)));
     for (int i = 0; i < n; ++i) frames.push_back(frames.back());
@@ -2148,6 +2172,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // Solve every frame: IK per hand (fixed swivel along the path, so the elbow moves smoothly),
   // fingers by FK, then push a hand out of the body if it entered it unintentionally.
   const int J = rig.joint_count;
+  st.out = std::move(*result);
+  SignMotion* const out = &st.out;
   out->frame_count = static_cast<int>(frames.size());
   out->rotations.resize(static_cast<size_t>(out->frame_count) * J);
   out->exempt.assign(out->frame_count, 0);
@@ -2227,14 +2253,18 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   PoseBuilder rest(rig);
   rest.set_from_local(ctx.rest_locals.data());
   // The hand turns and swivel offsets clear_arm applied, per frame and hand (identity / 0: none).
-  std::vector<std::array<glm::quat, 2>> turns(frames.size());
-  std::vector<std::array<float, 2>> swivel_fixes(frames.size());
+  auto& turns = st.turns;
+  turns.resize(frames.size());
+  auto& swivel_fixes = st.swivel_fixes;
+  swivel_fixes.resize(frames.size());
   // The swivel offsets the ramp rounds added to each frame so far (clear_arm's preferred side).
-  std::vector<std::array<float, 2>> swivel_ramped(frames.size(), {0.0f, 0.0f});
+  auto& swivel_ramped = st.swivel_ramped;
+  swivel_ramped.resize(frames.size(), {0.0f, 0.0f});
   // The side a run of swivel fixes is given as a whole (+1 / -1; 0: chosen per frame), per hand.
   std::vector<std::array<float, 2>> forced_side(frames.size(), {0.0f, 0.0f});
   // The per-frame push out of the body / the other hand, per frame and hand (zero: none).
-  std::vector<std::array<glm::vec3, 2>> push_offsets(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
+  auto& push_offsets = st.push_offsets;
+  push_offsets.resize(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
   // A wrist that flips: where a hand's requested orientation is out of the wrist's reach, the
   // clamped wrist angles can change branch between two frames (twist and flexion from one limit
   // to the other: LEARN's pinched hand on its way to the forehead, the wrist 17 cm in a frame).
@@ -2260,13 +2290,16 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // deepened the far-side rest transitions by up to 2 mm).
   constexpr float kMinSwivelGainM = 0.001f;
   // The arm pose each frame ended its first solve with, per hand, and whether it was continued.
-  std::vector<std::array<ArmPose, 2>> solved(frames.size());
-  std::vector<std::array<char, 2>> continued(frames.size(), {0, 0});
+  auto& solved = st.solved;
+  solved.resize(frames.size());
+  auto& continued = st.continued;
+  continued.resize(frames.size(), {0, 0});
   // Each frame's finished wrist per hand (after its pushes and arm clearing), and how much deeper
   // than the usual start's a continued frame solved from the previous wrist may end (0.5 mm:
   // below the collision checks' rounding of a posed capsule, and a quarter of the 2 mm a push
   // lets stand).
-  std::vector<std::array<glm::vec3, 2>> final_wrist(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
+  auto& final_wrist = st.final_wrist;
+  final_wrist.resize(frames.size(), {glm::vec3(0.0f), glm::vec3(0.0f)});
   constexpr float kBranchDepthSlackM = 0.0005f;
   auto wrist_change = [](const ArmPose& a, const ArmPose& b) {
     return std::max({std::fabs(a.twist_rad - b.twist_rad), std::fabs(a.wrist_dev_rad - b.wrist_dev_rad),
@@ -2320,6 +2353,14 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // A continued frame's pose before its first way and after it (choose_branch, below); made once,
   // their buffers reused.
   PoseBuilder pb_start(rig), pb_usual(rig);
+  // A hand caught between two trunk or hand capsules (the hand at the chin: out of the head is
+  // into the torso and back) is pushed out of each in turn, and the way it finally leaves by
+  // depends on which was deepest at each attempt: it flipped between neighbouring frames (the
+  // corpus's cztery tygodnie temu, sign frames 21-23: (0.150, 0.005, -0.079), (-0.038, -0.039,
+  // -0.196), (-0.141, -0.068, -0.072) m, the wrist 25 cm in a frame). `any_jam`: some push in
+  // the solve went against the attempt before it; `jam_rule`: such a push goes along the sum of
+  // the two ways and forward (away from the body) instead (the choice after the ramps below).
+  bool jam_rule = false, any_jam = false;
   auto solve_frames = [&](const std::vector<char>* redo) {
     if (!redo || (*redo)[0]) {
       out->max_reach_error_m = 0.0f;
@@ -2435,6 +2476,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
             t.start_at_previous_wrist = true;
             t.previous_wrist = final_wrist[f - 1][i];
           }
+          glm::vec3 last_push_dir(0.0f);
           for (int attempt = 0; attempt < 6; ++attempt) {
             ArmPose ap = solve_arm(rig, plan.side, t);
             if (attempt == 0) {
@@ -2492,7 +2534,13 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
             if (pen.depth_m <= 0.002f) break;
             // Out along the escape direction and a little forward (away from the body), which the
             // arm can always follow.
-            t.point += pen.push_dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
+            glm::vec3 dir = pen.push_dir;
+            if (glm::dot(dir, last_push_dir) < 0.0f) {
+              if (jam_rule) dir = safe_normalize(dir + last_push_dir + rig.forward, rig.forward);
+              any_jam = true;
+            }
+            last_push_dir = dir;
+            t.point += dir * (pen.depth_m + 0.006f) + (attempt >= 2 ? 0.01f : 0.0f) * rig.forward;
             if (attempt == 0) ++out->pushes;
           }
           push_offsets[f][i] = t.point - start_point;
@@ -2554,6 +2602,8 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       }
     }
   };
+  // The state before the first solve: the clip is solved again from it with the jam rule.
+  const ClipSolveState start = st;
   solve_frames(nullptr);
   // A turn decided frame by frame starts (and ends) at once: the hand would jump (a 60 degree
   // turn about a fingertip moves the wrist 17 cm in one frame). Ramp every turn in and out over
@@ -2678,6 +2728,19 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // smaller. Scored after the ramps: the depth a forced side leaves frame by frame foretold the
   // ramped clip's badly (a side at most 1 mm deeper at any frame before the ramps sank 6 corpus
   // signs by over 2 mm after them). Runs whose fixes share a side, most, cost nothing.
+  // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
+  // largest wrist or elbow step in one frame.
+  struct Score {
+    float depth_m, step_m;
+  };
+  auto score = [&]() {
+    Clip c;
+    c.fps = fps;
+    c.frame_count = out->frame_count;
+    c.rotations = out->rotations;
+    return Score{max_penetration(ctx, out->rotations.data(), c.frame_count, out->exempt.data(), nullptr, nullptr),
+                 measure_frame_steps(rig, c).step_m};
+  };
   auto choose_run_sides_and_ramp = [&]() {
     const int n = out->frame_count;
     struct SideRun {
@@ -2712,44 +2775,13 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       return;
     }
     // The state after the first solve, each side's rounds start from it.
-    const std::vector<FrameTarget> first_frames = frames;
-    const auto first_turns = turns;
-    const auto first_fixes = swivel_fixes;
-    const auto first_ramped = swivel_ramped;
-    const auto first_pushes = push_offsets;
-    const auto first_solved = solved;
-    const auto first_continued = continued;
-    const auto first_final_wrist = final_wrist;
-    const SignMotion first_out = *out;
-    // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
-    // largest wrist or elbow step in one frame.
-    struct Score {
-      float depth_m, step_m;
-    };
-    auto score = [&]() {
-      Clip c;
-      c.fps = fps;
-      c.frame_count = n;
-      c.rotations = out->rotations;
-      return Score{max_penetration(ctx, out->rotations.data(), n, out->exempt.data(), nullptr, nullptr),
-                   measure_frame_steps(rig, c).step_m};
-    };
+    const ClipSolveState first = st;
     ramp_rounds();
-    Score best = score();
-    const float free_depth = best.depth_m;
-    SignMotion best_out = *out;
-    auto best_solved = solved;
-    auto best_continued = continued;
+    Score best_score = score();
+    const float free_depth = best_score.depth_m;
+    ClipSolveState best = st;
     for (float side : {1.0f, -1.0f}) {
-      frames = first_frames;
-      turns = first_turns;
-      swivel_fixes = first_fixes;
-      swivel_ramped = first_ramped;
-      push_offsets = first_pushes;
-      solved = first_solved;
-      continued = first_continued;
-      final_wrist = first_final_wrist;
-      *out = first_out;
+      st = first;
       for (const SideRun& r : runs)
         for (int g = r.first; g <= r.last; ++g) forced_side[g][r.hand] = side;
       solve_frames(&in_run);
@@ -2758,32 +2790,69 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       const Score sc = score();
       // No deeper (0.1 mm: rounding), a smaller step: a side that trades depth for steps is not
       // taken (kelner's, either side 7-12 mm deeper, both still 0.45 m steps).
-      if (sc.depth_m <= free_depth + 1e-4f && sc.step_m < best.step_m) {
-        best = sc;
-        best_out = *out;
-        best_solved = solved;
-        best_continued = continued;
+      if (sc.depth_m <= free_depth + 1e-4f && sc.step_m < best_score.step_m) {
+        best_score = sc;
+        best = st;
       }
     }
-    *out = std::move(best_out);
-    solved = std::move(best_solved);
-    // The kept side's wrist flips (synthesize_sign_motion counts them to decide the second solve).
-    continued = std::move(best_continued);
+    // The kept side's clip, arm poses and wrist flips (synthesize_sign_motion counts them to
+    // decide the second solve).
+    st = std::move(best);
   };
   choose_run_sides_and_ramp();
+  // Where a push went against the one before it, the whole clip is solved again with the jam
+  // rule (one way out for the caught hand: the two pushes' sum and forward) and kept only where
+  // the ramped clip is no deeper (0.1 mm: rounding) and its largest wrist or elbow step smaller.
+  // Chosen per frame (the shallower end of the two push loops, or the shorter push), 37 corpus
+  // signs sank by over 2 mm: a frame's depth before the ramps does not foretell the ramped
+  // clip's (as ramp-side's sides). Measured (docs/SYNTHESIS.md, push-side): cztery tygodnie temu
+  // 45.1 mm deep and a 489 mm step -> 11.3 and 390; HamNoSys corpus over 5 mm 185 -> 133.
+  // The choice sees the sign's own frames only: where the jam rule's clip is kept, the usual one
+  // goes back too (`usual_alternative`), and the phrase compares the two with the transitions it
+  // builds next to the sign (synthesize.cpp), which start from a changed first frame.
+  bool alternative = false;
+  ClipSolveState usual_state;
+  if (any_jam && ctx.options.avoid_collisions) {
+    const Score usual = score();
+    usual_state = std::move(st);
+    st = start;
+    jam_rule = true;
+    solve_frames(nullptr);
+    choose_run_sides_and_ramp();
+    jam_rule = false;
+    const Score jam = score();
+    if (jam.depth_m <= usual.depth_m + 1e-4f && jam.step_m < usual.step_m)
+      alternative = usual_alternative != nullptr;
+    else
+      st = std::move(usual_state);
+  }
   if (continued_frames) {
+    // With both clips handed back, both clips' (the caller's second solve is for either).
     *continued_frames = 0;
     for (const auto& c : continued) *continued_frames += c[0] + c[1];
+    if (alternative)
+      for (const auto& c : usual_state.continued) *continued_frames += c[0] + c[1];
   }
-  out->orientation_error_rad.assign(frames.size(), 0.0f);
-  for (size_t f = 0; f < frames.size(); ++f)
-    for (int i = 0; i < 2; ++i)
-      if (plans[i].active)
-        out->orientation_error_rad[f] = std::max(out->orientation_error_rad[f], solved[f][i].orientation_error_rad);
-  // Solved in the thorax frame: the clip's frames carry the turn in the trunk chain.
-  if (solver.turn.active())
-    for (int f = 0; f < out->frame_count; ++f)
-      apply_thorax_turn(rig, solver.turn, &out->rotations[static_cast<size_t>(f) * J]);
+  auto finish = [&](ClipSolveState* s, SignMotion* m) {
+    s->out.orientation_error_rad.assign(s->frames.size(), 0.0f);
+    for (size_t f = 0; f < s->frames.size(); ++f)
+      for (int i = 0; i < 2; ++i)
+        if (plans[i].active)
+          s->out.orientation_error_rad[f] =
+              std::max(s->out.orientation_error_rad[f], s->solved[f][i].orientation_error_rad);
+    // Solved in the thorax frame: the clip's frames carry the turn in the trunk chain.
+    if (solver.turn.active())
+      for (int f = 0; f < s->out.frame_count; ++f)
+        apply_thorax_turn(rig, solver.turn, &s->out.rotations[static_cast<size_t>(f) * J]);
+    *m = std::move(s->out);
+  };
+  finish(&st, result);
+  if (usual_alternative) {
+    if (alternative)
+      finish(&usual_state, usual_alternative);
+    else
+      *usual_alternative = SignMotion{};
+  }
   return true;
 }
 
@@ -2832,13 +2901,14 @@ std::vector<StepPeaks> step_peaks(const Rig& rig, const SignMotion& m,
 
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
-                            std::vector<SynthesisError>* errors) {
+                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative) {
   // The sign's arm solves asked again with the same target are answered from memory (arm_ik.h;
   // the clip is the same to the bit), also in the second solve at a stretched timing below.
   ArmSolveMemo arm_solves;
   std::vector<StepSpan> spans;
   int continued_frames = 0;
-  if (!synthesize_sign_motion_timed(ctx, sign, where, {}, false, out, errors, &spans, &continued_frames))
+  if (!synthesize_sign_motion_timed(ctx, sign, where, {}, false, out, errors, &spans, &continued_frames,
+                                    usual_alternative))
     return false;
   // A sign with frames that continue a wrist flip is solved once more with each such frame's
   // branch chosen on the finished frame (solve_frames: the usual start or the previous wrist's).
@@ -2853,7 +2923,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     SignMotion chosen;
     std::vector<SynthesisError> repeated;
     std::vector<StepSpan> chosen_spans;
-    if (synthesize_sign_motion_timed(ctx, sign, where, {}, true, &chosen, &repeated, &chosen_spans, nullptr) &&
+    SignMotion chosen_alternative;
+    if (synthesize_sign_motion_timed(ctx, sign, where, {}, true, &chosen, &repeated, &chosen_spans, nullptr,
+                                     usual_alternative ? &chosen_alternative : nullptr) &&
         chosen_spans.size() == spans.size()) {
       // Measured as the clip has them by default: after the elbow's path is made continuous
       // (synthesize.cpp, elbow_path.h), which moves the elbows of a sign whose wrist changes side.
@@ -2870,10 +2942,22 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
         std::string what;
         return max_penetration(ctx, c.rotations.data(), c.frame_count, m.exempt.data(), &what, nullptr);
       };
-      float step = 0.0f, chosen_step = 0.0f;
-      const float depth = depth_and_step(*out, &step);
-      const float chosen_depth = depth_and_step(chosen, &chosen_step);
-      if (chosen_depth <= depth + kBranchSignSlackM && chosen_step < step) {
+      auto second_is_better = [&](const SignMotion& first, const SignMotion& second) {
+        float step = 0.0f, second_step = 0.0f;
+        const float depth = depth_and_step(first, &step);
+        const float second_depth = depth_and_step(second, &second_step);
+        return second_depth <= depth + kBranchSignSlackM && second_step < step;
+      };
+      // The clips without the jam rule (each solve's alternative, or its clip where it has none)
+      // are chosen between by the same rule, on their own: the caller weighs the jam rule's
+      // result against the clip the sign would have had without it.
+      if (usual_alternative && (usual_alternative->frame_count > 0 || chosen_alternative.frame_count > 0)) {
+        const SignMotion& first = usual_alternative->frame_count > 0 ? *usual_alternative : *out;
+        const SignMotion& second = chosen_alternative.frame_count > 0 ? chosen_alternative : chosen;
+        SignMotion kept = second_is_better(first, second) ? second : first;
+        *usual_alternative = std::move(kept);
+      }
+      if (second_is_better(*out, chosen)) {
         *out = std::move(chosen);
         spans = std::move(chosen_spans);
         choose_branch = true;
@@ -2914,13 +2998,16 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     SignMotion slower;
     std::vector<SynthesisError> repeated;
     std::vector<StepSpan> again;
-    if (!synthesize_sign_motion_timed(ctx, sign, where, states, choose_branch, &slower, &repeated, &again, nullptr) ||
+    SignMotion slower_alternative;
+    if (!synthesize_sign_motion_timed(ctx, sign, where, states, choose_branch, &slower, &repeated, &again, nullptr,
+                                      usual_alternative ? &slower_alternative : nullptr) ||
         again.size() != spans.size())
       return true;
     // Not exactly 1/duration^2 (above): a stretch that measures no better is not taken.
     std::vector<StepPeaks> slower_peaks = step_peaks(ctx.rig, slower, again, ctx.options.fps);
     if (worst_excess(slower_peaks) >= worst_excess(peaks)) return true;
     *out = std::move(slower);
+    if (usual_alternative) *usual_alternative = std::move(slower_alternative);
     spans = std::move(again);
     peaks = std::move(slower_peaks);
   }

@@ -55,9 +55,12 @@ struct SignMotion {
 };
 
 // Synthesises one sign's frames (no transitions in or out). `where` prefixes error locations.
+// `usual_alternative` (optional): where a hand caught between two capsules was sent out by the
+// jam rule (sign_motion.cpp) and that clip kept, the clip solved without the rule, for the caller
+// to judge the two with the transitions next to the sign; otherwise left empty (frame_count 0).
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
-                            std::vector<SynthesisError>* errors);
+                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr);
 
 // Name of the body anchor for a location (`body/chest/right`, `space/centre`), mirrored when the
 // hand's side is mirrored; empty for places on the other hand.
