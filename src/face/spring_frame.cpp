@@ -35,12 +35,17 @@ namespace {
 
 // Spring s's force on its end point `point` (the other end is `other`): F = -k (L - l) along the
 // spring (cos theta, sin theta); a zero-length spring pulls straight to the other end point.
-glm::vec2 spring_force(const Spring& s, const glm::vec2& point, const glm::vec2& other) {
-  const glm::vec2 d = point - other;
-  const float length = glm::length(d);
-  if (length > 1e-9f) return -s.k * (length - s.natural_length) * (d / length);
+// Below this length a spring has no direction.
+constexpr float kShortestSpring = 1e-9f;
+// The same force given the difference d = point - other and its length.
+glm::vec2 spring_force_along(const Spring& s, const glm::vec2& d, float length) {
+  if (length > kShortestSpring) return -s.k * (length - s.natural_length) * (d / length);
   if (s.natural_length > 0.0f) return glm::vec2(s.k * s.natural_length, 0.0f);
   return glm::vec2(0.0f);
+}
+glm::vec2 spring_force(const Spring& s, const glm::vec2& point, const glm::vec2& other) {
+  const glm::vec2 d = point - other;
+  return spring_force_along(s, d, glm::length(d));
 }
 
 }  // namespace
@@ -65,10 +70,16 @@ float SpringFrame::step(float alpha) {
   std::vector<float> stiffness(points_.size(), 0.0f);
   for (const Spring& s : springs_) {
     const std::size_t a = static_cast<std::size_t>(s.a), b = static_cast<std::size_t>(s.b);
-    forces[a] += spring_force(s, points_[a].position, points_[b].position);
+    const glm::vec2 d = points_[a].position - points_[b].position;
+    const float length = glm::length(d);
+    // spring_force at each end, worked out once: b's difference is -d to the bit (a rounded
+    // difference is odd in its operands), so is its length and, along the spring, its force.
+    // Only a spring too short for a direction pulls both ends the same way.
+    const glm::vec2 force_on_a = spring_force_along(s, d, length);
+    forces[a] += force_on_a;
     stiffness[a] += s.k;
     if (b == a) continue;
-    forces[b] += spring_force(s, points_[b].position, points_[a].position);
+    forces[b] += length > kShortestSpring ? -force_on_a : force_on_a;
     stiffness[b] += s.k;
   }
   float largest = 0.0f;

@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
 
 namespace sw::synthesis {
 namespace {
@@ -401,18 +404,69 @@ glm::vec3 bind_palm_centre(const Rig& rig, Side side) {
   return centre + a.palm_normal * (0.17f * a.palm_width_m);  // half the palm's thickness
 }
 
+namespace {
+
+// The finger and thumb geometry pose_fingers poses with, remembered: it is a function of the bind
+// pose alone (the chains' points, the hand frame), and pose_fingers runs for every posed frame
+// (about 18 k times in a lexicon pass), where measuring it again (two atan2 a finger, the thumb's
+// frame_to_frame and acos) was a quarter of pose_fingers' instructions. The key is the bits of
+// every input finger_geom and thumb_geom read, so a remembered geometry is the one they compute.
+constexpr int kHandGeomKeyFloats = (5 * 4 + 3) * 3;
+using HandGeomKey = std::array<float, kHandGeomKeyFloats>;
+
+HandGeomKey hand_geom_key(const Rig& rig, Side side) {
+  HandGeomKey key{};
+  int n = 0;
+  auto put = [&](const glm::vec3& v) {
+    for (int k = 0; k < 3; ++k) key[n++] = v[k];
+  };
+  const ArmRig& a = rig.arms[side];
+  for (int f = 0; f < 5; ++f) {
+    for (int i = 0; i < 3; ++i) put(rig.bind_pos[a.fingers[f].bones[i]]);
+    put(rig.bind_tip(side, f));
+  }
+  put(a.finger_dir);
+  put(a.palm_normal);
+  put(a.radial);
+  return key;
+}
+
+struct HandGeom {
+  HandGeomKey key;
+  std::array<FingerGeom, 5> fingers;  // [0] unused: the thumb is `thumb`
+  ThumbGeom thumb;
+};
+
+const HandGeom& hand_geom(const Rig& rig, Side side) {
+  // A page poses one or two rigs, both sides: a few entries; past that many the table starts
+  // again (a bound on memory, not a policy the results depend on).
+  constexpr size_t kRemembered = 8;
+  thread_local std::vector<HandGeom> remembered;
+  const HandGeomKey key = hand_geom_key(rig, side);
+  for (const HandGeom& g : remembered)
+    if (std::memcmp(g.key.data(), key.data(), sizeof key) == 0) return g;
+  if (remembered.size() >= kRemembered) remembered.clear();
+  HandGeom g;
+  g.key = key;
+  for (int f = 1; f < 5; ++f) g.fingers[f] = finger_geom(rig, side, f);
+  g.thumb = thumb_geom(rig, side);
+  remembered.push_back(g);
+  return remembered.back();
+}
+
+}  // namespace
+
 void pose_fingers(const Rig& rig, Side side, const HandAngles& angles, const glm::quat& hand,
                   PoseBuilder* pose) {
   const ArmRig& a = rig.arms[side];
+  const HandGeom& geom = hand_geom(rig, side);
   for (int f = 1; f < 5; ++f) {
-    FingerGeom g = finger_geom(rig, side, f);
     glm::quat r[3];
-    finger_rotations(rig, side, g, angles.fingers[f - 1], r);
+    finger_rotations(rig, side, geom.fingers[f], angles.fingers[f - 1], r);
     for (int i = 0; i < 3; ++i) pose->set(a.fingers[f].bones[i], hand * r[i]);
   }
-  ThumbGeom tg = thumb_geom(rig, side);
   glm::quat r[3];
-  thumb_rotations(tg, a.palm_normal, angles.thumb, r);
+  thumb_rotations(geom.thumb, a.palm_normal, angles.thumb, r);
   for (int i = 0; i < 3; ++i) pose->set(a.fingers[0].bones[i], hand * r[i]);
 }
 
@@ -487,7 +541,8 @@ ThumbAngles solve_thumb_across(const Rig& rig, Side side, const HandAngles& angl
 
 }  // namespace
 
-HandAngles solve_handshape(const Rig& rig, Side side, const notation::HandShape& shape) {
+static HandAngles solve_handshape_uncached(const Rig& rig, Side side,
+                                           const notation::HandShape& shape) {
   HandAngles angles = handshape_angles(shape);
   if (shape.fingers[0].id == notation::kThumbAcross) {
     // F^1(t) across: t blends from the state's begin (alongside) to the solved across pose.
@@ -548,6 +603,74 @@ HandAngles solve_handshape(const Rig& rig, Side side, const notation::HandShape&
   angles.fingers[target - 1] = lerp(configured, curled, static_cast<float>(x[5]));
   clamp_all(&angles);
   return angles;
+}
+
+namespace {
+
+// solve_handshape's thumb solves remembered (issue 4's "under 1 ms per sign"): a thumb-contact or
+// thumb-across shape costs a Levenberg-Marquardt solve (40 steps of 13 error evaluations, about
+// 0.27 M instructions), and the same few shapes come back in every sign that uses them (a page's
+// lexicon, the bench's repeated calls). The key holds the bits of every input the solve reads:
+// the arm's bind hand frame (finger_dir, palm_normal, radial), its palm width and finger radius,
+// the hand joint's and every finger chain's bind positions and tips, and each finger's
+// configuration (id, has_t, t, spread). The solve is a fixed arithmetic on those inputs (no
+// state, no branch on anything else), so a remembered result is the one it would compute: the
+// clips are unchanged to the bit. Keyed on values, not on the rig's address, a remembered solve
+// cannot outlive what it was computed from; the table lives for the thread.
+constexpr int kThumbSolveKeyWords = (1 + 5 * 4 + 3) * 3 + 2 + 4 * notation::kFingerCount;
+using ThumbSolveKey = std::array<std::uint32_t, kThumbSolveKeyWords>;
+
+ThumbSolveKey thumb_solve_key(const Rig& rig, Side side, const notation::HandShape& shape) {
+  ThumbSolveKey key{};
+  int n = 0;
+  auto put_float = [&](float v) { std::memcpy(&key[n++], &v, sizeof v); };
+  auto put_vec = [&](const glm::vec3& v) {
+    for (int k = 0; k < 3; ++k) put_float(v[k]);
+  };
+  const ArmRig& a = rig.arms[side];
+  put_vec(rig.bind_pos[a.hand]);
+  for (int f = 0; f < 5; ++f) {
+    for (int i = 0; i < 3; ++i) put_vec(rig.bind_pos[a.fingers[f].bones[i]]);
+    put_vec(rig.bind_tip(side, f));
+  }
+  put_vec(a.finger_dir);
+  put_vec(a.palm_normal);
+  put_vec(a.radial);
+  put_float(a.palm_width_m);
+  put_float(a.finger_radius_m);
+  for (const notation::FingerConfig& c : shape.fingers) {
+    key[n++] = static_cast<std::uint32_t>(c.id);
+    key[n++] = c.has_t ? 1u : 0u;
+    put_float(c.t);
+    put_float(c.spread);
+  }
+  return key;
+}
+
+struct RememberedThumbSolve {
+  std::uint32_t hash;
+  ThumbSolveKey key;
+  HandAngles angles;
+};
+
+// A lexicon uses a few dozen thumb shapes per rig and side; past this many the table starts
+// again (a bound on memory for a long-lived page, not a cache policy the results depend on).
+constexpr size_t kRememberedThumbSolves = 512;
+
+}  // namespace
+
+HandAngles solve_handshape(const Rig& rig, Side side, const notation::HandShape& shape) {
+  if (shape.fingers[0].id != notation::kThumbAcross && thumb_contact_finger(shape) < 0)
+    return solve_handshape_uncached(rig, side, shape);  // preset angles: nothing to solve
+  thread_local std::vector<RememberedThumbSolve> remembered;
+  const ThumbSolveKey key = thumb_solve_key(rig, side, shape);
+  std::uint32_t hash = 2166136261u;  // FNV-1a over the key's words
+  for (std::uint32_t w : key) hash = (hash ^ w) * 16777619u;
+  for (const RememberedThumbSolve& r : remembered)
+    if (r.hash == hash && r.key == key) return r.angles;
+  if (remembered.size() >= kRememberedThumbSolves) remembered.clear();
+  remembered.push_back({hash, key, solve_handshape_uncached(rig, side, shape)});
+  return remembered.back().angles;
 }
 
 }  // namespace sw::synthesis

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "synthesis_fixture.h"
@@ -147,6 +148,40 @@ TEST_P(HandshapeTest, ThumbContactPoseIsContinuousInItsInputs) {
     }
   EXPECT_LT(worst, 1e-4f) << where;
   RecordProperty("worst_change_rad", std::to_string(worst));
+}
+
+// solve_handshape's thumb solves and pose_fingers' finger geometry are remembered
+// (handshape.cpp), keyed on the bits of the bind geometry they read: asked again they answer with
+// the same bits, and a rig whose index finger is bent in its bind pose, asked after the straight
+// one, gets its own solve and geometry, not the remembered ones (a key without the rig fails
+// here: the flat index bent by the straight rig's bind angles, the pinch the straight rig's).
+TEST_P(HandshapeTest, RememberedHandSolvesFollowTheRigTheyAreAskedFor) {
+  notation::HandShape pinch = flat();
+  pinch.fingers[0] = notation::FingerConfig{notation::kThumbPadOnIndex, false, 1.0f, 0.0f};
+  const HandAngles first = solve_handshape(rig_, kRight, pinch);
+  const HandAngles again = solve_handshape(rig_, kRight, pinch);
+  EXPECT_EQ(0, std::memcmp(&first, &again, sizeof first));
+  PoseBuilder straight(rig_);
+  pose_fingers(rig_, kRight, solve_handshape(rig_, kRight, flat()), glm::quat(1, 0, 0, 0),
+               &straight);
+
+  // The index finger's distal joint and tip 1.5 cm palmar in the bind pose (its middle phalanx
+  // bent about 30 degrees).
+  Rig bent = rig_;
+  const ArmRig& a = bent.arms[kRight];
+  const FingerChain& index = a.fingers[1];
+  const glm::vec3 shift = 0.015f * a.palm_normal;
+  bent.bind_pos[static_cast<size_t>(index.bones[2])] += shift;
+  if (index.tip >= 0) bent.bind_pos[static_cast<size_t>(index.tip)] += shift;
+  EXPECT_GT(max_angle_difference(first, solve_handshape(bent, kRight, pinch)), 1e-3f);
+  PoseBuilder pb(bent);
+  pose_fingers(bent, kRight, solve_handshape(bent, kRight, flat()), glm::quat(1, 0, 0, 0), &pb);
+  pb.finalize();
+  const glm::vec3 d0 = glm::normalize(pb.position(index.bones[1]) - pb.position(index.bones[0]));
+  const glm::vec3 d1 = glm::normalize(pb.position(index.bones[2]) - pb.position(index.bones[1]));
+  const glm::vec3 d2 = glm::normalize(pb.tip(kRight, 1) - pb.position(index.bones[2]));
+  EXPECT_GT(glm::dot(d0, d1), std::cos(5.0f / 57.3f));
+  EXPECT_GT(glm::dot(d1, d2), std::cos(5.0f / 57.3f));
 }
 
 // Closest distance between segments [p0, p1] and [q0, q1] (sampled finely: a test helper).
