@@ -1331,6 +1331,31 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
       return false;
     }
   record.deeper = false;
+  // A retry (every try after the first) whose waypoints themselves are deeper than the ceilings is
+  // taken as deeper without sampling its chain (speed-rest). The chain runs through each waypoint
+  // (the cross-fade at a knot passes next to it), so its states there are about as deep; a retry
+  // is asked where the tries before it were deep, and there the waypoints of the wider bows are
+  // often in the body themselves. Each waypoint is checked with both ends' exemptions (the most
+  // any state of the path has), so no state there is checked more leniently. Not exact: a chain's
+  // states can miss a deep waypoint's neighbourhood; measured against sampling every try
+  // (docs/SYNTHESIS.md, speed-rest): no corpus sign over 1 mm deeper, the lexicon's clips
+  // unchanged. The first try is not checked: the lexicon's 282 rest transitions make 343 tries,
+  // most take their first, and there the three poses cost more than they save.
+  if (try_index > 0) {
+    const std::uint8_t either_end = exempt_from | exempt_to;
+    for (const std::vector<glm::quat>& waypoint : waypoints) {
+      const KindDepths at_waypoint = depths_by_kind(ctx, waypoint.data(), 1, &either_end);
+      if (is_deeper(at_waypoint)) {
+        // Recorded as a try found deeper at no states (k = 0): HandPathTrials's shortcut then
+        // answers it as this check would, whatever the direct path's length.
+        record.deeper = true;
+        record.k = 0;
+        record.depths = at_waypoint;
+        *deeper = true;
+        return false;
+      }
+    }
+  }
   const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
   // Eq. (10)'s L_max on the hand's path is the arm's: the longest path of the shoulder girdle,
