@@ -778,9 +778,9 @@ constexpr float kHandPathWideBowFrom_m = 0.20f;
 //   plan_hand_path_bowed).
 struct WaypointBase;
 struct HandPathTrials {
-  // The same for every try (speed-rest): the ends posed, the trunk's frame at each end, and each
-  // waypoint's direct slerp posed with its trunk's frame (WaypointBase); only the arm solves at
-  // the waypoints differ between the tries. Made at the first try that needs them.
+  // The same for every try (speed-rest): the ends posed, and each waypoint's direct slerp posed
+  // with the trunk's frame there (WaypointBase); the arm solves at the waypoints are the tries'
+  // own. Made at the first try that needs them.
   std::unique_ptr<PoseBuilder> from_posed, to_posed;
   std::vector<std::unique_ptr<WaypointBase>> waypoint_bases;
   struct Try {
