@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 #include "math/quat_lanes.h"
 #include "synthesis/arm_ik.h"
@@ -775,7 +776,13 @@ constexpr float kHandPathWideBowFrom_m = 0.20f;
 //   states, so its depths are at least those: past this call's ceilings, it is deeper without
 //   measuring (and with the same states a call that stops at "not shorter" stops: see
 //   plan_hand_path_bowed).
+struct WaypointBase;
 struct HandPathTrials {
+  // The same for every try (speed-rest): the ends posed, and each waypoint's direct slerp posed
+  // with the trunk's frame there (WaypointBase); the arm solves at the waypoints are the tries'
+  // own. Made at the first try that needs them.
+  std::unique_ptr<PoseBuilder> from_posed, to_posed;
+  std::vector<std::unique_ptr<WaypointBase>> waypoint_bases;
   struct Try {
     std::vector<std::vector<glm::quat>> waypoints;  // empty until solved
     bool deeper = false;
@@ -906,8 +913,30 @@ std::array<glm::vec3, 2> hands_apart_dirs(const Rig& rig, const PoseBuilder& sig
 // 0.75), and the hands close only in the last quarter.
 float hands_apart_share(float s) { return std::min(1.0f, 1.5f * std::sin(3.14159265f * s)); }
 
-// A waypoint on the hand's own path between two poses (pf, pt: them posed), a fraction `s` of the way: each arm whose
-// wrist moves is re-solved by the arm IK with its wrist on the straight line between its end
+// What a waypoint at the fraction s starts from, the same for every try (HandPathTrials): the
+// direct slerp there, posed, and the trunk's frame in it.
+struct WaypointBase {
+  WaypointBase(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, float s)
+      : at(static_cast<size_t>(ctx.rig.joint_count)), pa(ctx.rig), pflat(ctx.rig) {
+    for (int j = 0; j < ctx.rig.joint_count; ++j) at[j] = slerp_shortest(from[j], to[j], s);
+    pa.set_from_local(at.data());
+    // A trunk that turns on the way (thorax_turn.h: a key pose low on the far side) carries the
+    // arms with it; the arm IK works with the trunk in its rest pose, so each arm is solved in the
+    // trunk's frame at this waypoint (the thorax frame) and its local rotations, relative to the
+    // turned trunk, are the same there. Solved in model space instead, the shoulder's own turn was
+    // missing from the wrist: the waypoints' wrists 4-6 cm off the path.
+    frame_at = thorax_frame(ctx, pa, from, to, at.data());
+    if (frame_at.turned) pflat.set_from_local(frame_at.locals.data());
+  }
+  std::vector<glm::quat> at;
+  PoseBuilder pa;
+  ThoraxFrame frame_at;
+  PoseBuilder pflat;  // posed only where the trunk turns
+};
+
+// A waypoint on the hand's own path between two poses (pf, pt: them posed; base: the direct slerp
+// there), a fraction `s` of the way: each arm whose wrist moves is re-solved by the arm IK with
+// its wrist on the straight line between its end
 // positions, its elbow swivel interpolated between the ends' and the hand turned as the direct
 // slerp turns it there (an orientation the arm reaches on that path; the model-space slerp of the
 // two ends asked for turns beyond the forearm's and wrist's limits on the way up from the rest and
@@ -916,29 +945,17 @@ float hands_apart_share(float s) { return std::min(1.0f, 1.5f * std::sin(3.14159
 // solves a waypoint) made a dictionary look-up 65% slower, and the path is checked against the
 // body afterwards anyway (plan_hand_path). `previous`: the same arms at the neighbouring waypoint
 // already solved, whose wrist angles this one continues (arm_ik.h), or none yet.
-std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const glm::quat* from, const glm::quat* to,
-                                          const PoseBuilder& pf, const PoseBuilder& pt, float s,
-                                          std::array<ArmPose, 2>* previous, bool has_previous, float bow_m,
-                                          bool search_swivel, const ThoraxFrame& frame_from,
-                                          const ThoraxFrame& frame_to, float apart_m,
+std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const WaypointBase& base, const PoseBuilder& pf,
+                                          const PoseBuilder& pt, float s, std::array<ArmPose, 2>* previous,
+                                          bool has_previous, float bow_m, bool search_swivel,
+                                          const ThoraxFrame& frame_from, const ThoraxFrame& frame_to, float apart_m,
                                           const std::array<glm::vec3, 2>& apart_dir, float turn_ahead,
                                           bool sign_at_end) {
   const Rig& rig = ctx.rig;
-  const int J = rig.joint_count;
-  std::vector<glm::quat> at(J);
-  for (int j = 0; j < J; ++j) at[j] = slerp_shortest(from[j], to[j], s);
-  PoseBuilder pa(rig);
-  pa.set_from_local(at.data());
-  std::vector<glm::quat> waypoint = at;
-  // A trunk that turns on the way (thorax_turn.h: a key pose low on the far side) carries the
-  // arms with it; the arm IK works with the trunk in its rest pose, so each arm is solved in the
-  // trunk's frame at this waypoint (the thorax frame) and its local rotations, relative to the
-  // turned trunk, are the same there. Solved in model space instead, the shoulder's own turn was
-  // missing from the wrist: the waypoints' wrists 4-6 cm off the path.
-  const ThoraxFrame frame_at = thorax_frame(ctx, pa, from, to, at.data());
-  PoseBuilder pflat(rig);
-  if (frame_at.turned) pflat.set_from_local(frame_at.locals.data());
-  const PoseBuilder& solve_pose = frame_at.turned ? pflat : pa;
+  const PoseBuilder& pa = base.pa;
+  const ThoraxFrame& frame_at = base.frame_at;
+  std::vector<glm::quat> waypoint = base.at;
+  const PoseBuilder& solve_pose = frame_at.turned ? base.pflat : pa;
   for (int side_index = 0; side_index < 2; ++side_index) {
     const Side side = static_cast<Side>(side_index);
     const ArmRig& a = rig.arms[side_index];
@@ -1293,9 +1310,14 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   HandPathTrials::Try& record = trials->tries[static_cast<size_t>(try_index)];
   std::vector<float> fractions(kHandPathWaypoints);
   for (int w = 0; w < kHandPathWaypoints; ++w) fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
-  PoseBuilder pf(rig), pt(rig);
-  pf.set_from_local(from);
-  pt.set_from_local(to);
+  if (!trials->from_posed) {
+    trials->from_posed = std::make_unique<PoseBuilder>(rig);
+    trials->to_posed = std::make_unique<PoseBuilder>(rig);
+    trials->from_posed->set_from_local(from);
+    trials->to_posed->set_from_local(to);
+  }
+  const PoseBuilder& pf = *trials->from_posed;
+  const PoseBuilder& pt = *trials->to_posed;
   if (record.waypoints.empty()) {
     record.waypoints.resize(kHandPathWaypoints);
     std::array<ArmPose, 2> solved_arms;
@@ -1303,9 +1325,12 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     const ThoraxFrame frame_to = thorax_frame(ctx, pt, from, to, to);
     const std::array<glm::vec3, 2> apart_dir =
         attempt.apart_m > 0.0f ? hands_apart_dirs(rig, rest_at_start ? pt : pf) : std::array<glm::vec3, 2>{};
+    if (trials->waypoint_bases.empty()) trials->waypoint_bases.resize(kHandPathWaypoints);
     for (int i = 0; i < kHandPathWaypoints; ++i) {
       const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
-      record.waypoints[w] = hand_path_waypoint(ctx, from, to, pf, pt, fractions[w], &solved_arms, i > 0, attempt.bow_m,
+      std::unique_ptr<WaypointBase>& base = trials->waypoint_bases[static_cast<size_t>(w)];
+      if (!base) base = std::make_unique<WaypointBase>(ctx, from, to, fractions[w]);
+      record.waypoints[w] = hand_path_waypoint(ctx, *base, pf, pt, fractions[w], &solved_arms, i > 0, attempt.bow_m,
                                                attempt.search_swivel, frame_from, frame_to, attempt.apart_m, apart_dir,
                                                attempt.turn_ahead, rest_at_start);
     }
@@ -1331,6 +1356,31 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
       return false;
     }
   record.deeper = false;
+  // A retry (every try after the first) whose waypoints themselves are deeper than the ceilings is
+  // taken as deeper without sampling its chain (speed-rest). The chain runs through each waypoint
+  // (the cross-fade at a knot passes next to it), so its states there are about as deep; a retry
+  // is asked where the tries before it were deep, and there the waypoints of the wider bows are
+  // often in the body themselves. Each waypoint is checked with both ends' exemptions (the most
+  // any state of the path has), so no state there is checked more leniently. Not exact: a chain's
+  // states can miss a deep waypoint's neighbourhood; measured against sampling every try
+  // (docs/SYNTHESIS.md, speed-rest): no corpus sign over 1 mm deeper, the lexicon's clips
+  // unchanged. The first try is not checked: the lexicon's 282 rest transitions make 343 tries,
+  // most take their first, and there the three poses cost more than they save.
+  if (try_index > 0) {
+    const std::uint8_t either_end = exempt_from | exempt_to;
+    for (const std::vector<glm::quat>& waypoint : waypoints) {
+      const KindDepths at_waypoint = depths_by_kind(ctx, waypoint.data(), 1, &either_end);
+      if (is_deeper(at_waypoint)) {
+        // Recorded as a try found deeper at no states (k = 0): HandPathTrials's shortcut then
+        // answers it as this check would, whatever the direct path's length.
+        record.deeper = true;
+        record.k = 0;
+        record.depths = at_waypoint;
+        *deeper = true;
+        return false;
+      }
+    }
+  }
   const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
   // Eq. (10)'s L_max on the hand's path is the arm's: the longest path of the shoulder girdle,
