@@ -414,12 +414,11 @@ namespace {
 constexpr int kHandGeomKeyFloats = (5 * 4 + 3) * 3;
 using HandGeomKey = std::array<float, kHandGeomKeyFloats>;
 
-HandGeomKey hand_geom_key(const Rig& rig, Side side) {
-  HandGeomKey key{};
-  int n = 0;
-  auto put = [&](const glm::vec3& v) {
-    for (int k = 0; k < 3; ++k) key[n++] = v[k];
-  };
+// The bind-pose points both memos key on (hand_geom_key here, thumb_solve_key below): every
+// finger chain's bind positions and tip, then the arm's bind hand frame. One list, so a point a
+// geometry reads cannot be added to one key and forgotten in the other; `put` takes a vec3.
+template <class PutVec>
+void put_hand_bind_points(const Rig& rig, Side side, PutVec&& put) {
   const ArmRig& a = rig.arms[side];
   for (int f = 0; f < 5; ++f) {
     for (int i = 0; i < 3; ++i) put(rig.bind_pos[a.fingers[f].bones[i]]);
@@ -428,6 +427,14 @@ HandGeomKey hand_geom_key(const Rig& rig, Side side) {
   put(a.finger_dir);
   put(a.palm_normal);
   put(a.radial);
+}
+
+HandGeomKey hand_geom_key(const Rig& rig, Side side) {
+  HandGeomKey key{};
+  int n = 0;
+  put_hand_bind_points(rig, side, [&](const glm::vec3& v) {
+    for (int k = 0; k < 3; ++k) key[n++] = v[k];
+  });
   return key;
 }
 
@@ -629,13 +636,7 @@ ThumbSolveKey thumb_solve_key(const Rig& rig, Side side, const notation::HandSha
   };
   const ArmRig& a = rig.arms[side];
   put_vec(rig.bind_pos[a.hand]);
-  for (int f = 0; f < 5; ++f) {
-    for (int i = 0; i < 3; ++i) put_vec(rig.bind_pos[a.fingers[f].bones[i]]);
-    put_vec(rig.bind_tip(side, f));
-  }
-  put_vec(a.finger_dir);
-  put_vec(a.palm_normal);
-  put_vec(a.radial);
+  put_hand_bind_points(rig, side, put_vec);
   put_float(a.palm_width_m);
   put_float(a.finger_radius_m);
   for (const notation::FingerConfig& c : shape.fingers) {
