@@ -131,6 +131,10 @@ class ArmSolveMemo {
   ArmSolveMemo& operator=(const ArmSolveMemo&) = delete;
   // Solves answered from the memo so far.
   std::size_t hits() const;
+  // One swivel's solves (arm_ik.cpp solve_at, inside solve_arm) answered from the memo so far:
+  // the same target solved at the same swivel for a solve_arm that differs in what solve_at does
+  // not read (the body model, the touch, the near swivel, the search flags).
+  std::size_t swivel_solve_hits() const;
 
   struct Table;
 
