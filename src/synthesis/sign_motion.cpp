@@ -578,7 +578,12 @@ struct Solver {
             }
         };
         try_ring(0.0f, 0.0f);
-        try_ring(0.08f, 0.0f);
+        // The second ring (8 cm out) only while the first ring's best pose still misses its
+        // orientation by more than 3 degrees or has a body cost: where it already realises the
+        // hand and keeps the arm clear, a place 8 cm further out (1.5 per metre of shift more)
+        // rarely wins (speed-wasm, docs/SYNTHESIS.md: 3 corpus signs change; its 16 solves were
+        // 2 % of the lexicon's instructions).
+        if (best.orientation_error_rad > 0.05f || best.body_cost > 0.0f) try_ring(0.08f, 0.0f);
         // Further out to the hand's own side only while the orientation still misses by more
         // than 10 degrees (so most signs pay nothing for it). Fingers pointing out to that side
         // with the palm down need the forearm to point that way: from a hand in front of the
