@@ -2373,6 +2373,10 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     }
     if (!redo) out->pushes = 0;
     int prev_pushes = 0;  // what the previous frame of this pass added to out->pushes
+    // One builder for the pass, set to a new one's state at each frame by assignment, which
+    // keeps its storage (4 k builders a lexicon pass were allocated per frame, speed-wasm).
+    const PoseBuilder fresh(rig);
+    PoseBuilder pb(rig);
     for (int f = 0; f < out->frame_count; ++f) {
       if (redo && !(*redo)[f]) continue;
       // A hold repeats its frame's hand states, and a frame is solved from its states alone but
@@ -2397,7 +2401,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       }
       const int pushes_before = out->pushes;
       const bool moving = f > 0 && !same_states(frames[f], frames[f - 1]);
-      PoseBuilder pb(rig);
+      pb = fresh;
       // Inactive hands keep the rest pose (the arm swung out of the other hand's way, if it is
       // in it: resting_arm_gives_way).
       for (int i = 0; i < 2; ++i)
