@@ -311,7 +311,8 @@ constexpr int kOrientationRounds = 12;
 constexpr int kReachRounds = 8;
 constexpr float kDamping = 0.5f;
 
-Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
+// solve_at's own work; solve_at (below the memo) answers a free solve it has already done.
+Solved solve_at_uncached(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
   const WristFrame w = wrist_frame(rig, side);
   const ChainBind& bind = chain_bind(rig, side);
   const float cos_swivel = std::cos(swivel), sin_swivel = std::sin(swivel);
@@ -358,6 +359,9 @@ Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
   }
   return best;
 }
+
+// solve_at_uncached, answered from the live ArmSolveMemo for a free solve (defined below it).
+Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel);
 
 }  // namespace
 
@@ -577,20 +581,17 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
 
 // The innermost live ArmSolveMemo on this thread (null: solve_arm remembers nothing).
 thread_local ArmSolveMemo* active_memo = nullptr;
+// Its table (solve_at, outside the memo's friends, reads it here).
+thread_local ArmSolveMemo::Table* active_table = nullptr;
 
-}  // namespace
-
-// Every input of a free solve, as bits (so -0 and +0, or two NaNs, are told apart only by
-// being different bits: a miss, solved as before). A flat open-addressing table (entries in the
-// order solved, slots holding entry indices), not a node per pose: the node allocations and the
-// map's bookkeeping were most of the memo's own cost (about 12 M instructions of the lexicon's
-// 1.6 G). A table outlives its memo on a spare list of the thread, emptied and reused by the next
-// memo (the next sign), so its storage is allocated once, not per sign.
-struct ArmSolveMemo::Table {
-  using Key = std::array<std::uint32_t, 24>;
+// A flat open-addressing table of remembered results keyed on input bits (entries in the order
+// added, slots holding entry indices).
+template <std::size_t kWords, typename Value>
+struct FlatMemoTable {
+  using Key = std::array<std::uint32_t, kWords>;
   struct Entry {
     Key key;
-    ArmPose pose;
+    Value value;
   };
   std::vector<Entry> entries;
   std::vector<std::uint32_t> hashes;  // per entry, checked before the key
@@ -611,19 +612,19 @@ struct ArmSolveMemo::Table {
     hits = 0;
   }
 
-  // The remembered pose for `key`, or null.
-  const ArmPose* find(const Key& key, std::uint32_t h) const {
+  // The remembered value for `key`, or null.
+  const Value* find(const Key& key, std::uint32_t h) const {
     const std::size_t mask = slots.size() - 1;
     for (std::size_t i = h & mask;; i = (i + 1) & mask) {
       const std::int32_t e = slots[i];
       if (e < 0) return nullptr;
       const std::size_t at = static_cast<std::size_t>(e);
-      if (hashes[at] == h && entries[at].key == key) return &entries[at].pose;
+      if (hashes[at] == h && entries[at].key == key) return &entries[at].value;
     }
   }
 
   // A key find() did not know.
-  void add(const Key& key, std::uint32_t h, const ArmPose& pose) {
+  void add(const Key& key, std::uint32_t h, const Value& value) {
     if (2 * (entries.size() + 1) > slots.size()) {
       std::vector<std::int32_t> bigger(2 * slots.size(), -1);
       const std::size_t mask = bigger.size() - 1;
@@ -638,33 +639,80 @@ struct ArmSolveMemo::Table {
     std::size_t i = h & mask;
     while (slots[i] >= 0) i = (i + 1) & mask;
     slots[i] = static_cast<std::int32_t>(entries.size());
-    entries.push_back(Entry{key, pose});
+    entries.push_back(Entry{key, value});
     hashes.push_back(h);
   }
+};
 
-  static Key key_of(const Rig& rig, Side side, const ArmTarget& t) {
-    Key k{};
-    unsigned char* out = reinterpret_cast<unsigned char*>(k.data());
-    auto put = [&out](const void* p, std::size_t n) {
-      std::memcpy(out, p, n);
-      out += n;
-    };
+// Writes the inputs' bits into a key, in order.
+struct KeyWriter {
+  unsigned char* out;
+  void put(const void* p, std::size_t n) {
+    std::memcpy(out, p, n);
+    out += n;
+  }
+};
+
+}  // namespace
+
+// Every input of a free solve, as bits (so -0 and +0, or two NaNs, are told apart only by
+// being different bits: a miss, solved as before). A flat open-addressing table, not a node per
+// pose: the node allocations and the map's bookkeeping were most of the memo's own cost (about
+// 12 M instructions of the lexicon's 1.6 G). A table outlives its memo on a spare list of the
+// thread, emptied and reused by the next memo (the next sign), so its storage is allocated once,
+// not per sign.
+//
+// `at` remembers solve_at (one swivel's fixed-point solve) for free solves too: solve_arm's
+// callers ask the same target again with only the body, the touch flag, the near swivel or the
+// search flags changed, which solve_at does not read, so its swivels' solves repeat (speed-key's
+// count: 1,657 of the lexicon's 25,381 solve_at calls, right-handed). Its key is every input
+// solve_at reads without ArmTarget::previous: the rig, the side, the point, the contact offset,
+// the requested orientation, the wrist motion and the swivel (max_wrist_step_rad,
+// start_at_previous_wrist and previous_wrist are read only with `previous`, which is never
+// remembered).
+struct ArmSolveMemo::Table {
+  FlatMemoTable<24, ArmPose> solves;
+  FlatMemoTable<18, Solved> at;
+
+  void clear() {
+    solves.clear();
+    at.clear();
+  }
+
+  static FlatMemoTable<24, ArmPose>::Key key_of(const Rig& rig, Side side, const ArmTarget& t) {
+    FlatMemoTable<24, ArmPose>::Key k{};
+    KeyWriter w{reinterpret_cast<unsigned char*>(k.data())};
     const Rig* rig_ptr = &rig;
     const BodyModel* body = t.body;
     const std::uint32_t flags = static_cast<std::uint32_t>(side) | (t.auto_swivel ? 1u << 8 : 0u) |
                                 (t.hand_contact ? 1u << 9 : 0u) | (t.has_near_swivel ? 1u << 10 : 0u) |
                                 (t.seek_orientation_acceptance ? 1u << 11 : 0u) |
                                 (t.start_at_previous_wrist ? 1u << 12 : 0u);
-    put(&rig_ptr, sizeof rig_ptr);
-    put(&body, sizeof body);
-    put(&flags, sizeof flags);
-    put(&t.point, sizeof t.point);
-    put(&t.contact_offset, sizeof t.contact_offset);
-    put(&t.hand_delta, sizeof t.hand_delta);
-    put(&t.wrist_motion, sizeof t.wrist_motion);
-    put(&t.swivel_rad, sizeof t.swivel_rad);
-    put(&t.near_swivel_rad, sizeof t.near_swivel_rad);
-    put(&t.max_wrist_step_rad, sizeof t.max_wrist_step_rad);
+    w.put(&rig_ptr, sizeof rig_ptr);
+    w.put(&body, sizeof body);
+    w.put(&flags, sizeof flags);
+    w.put(&t.point, sizeof t.point);
+    w.put(&t.contact_offset, sizeof t.contact_offset);
+    w.put(&t.hand_delta, sizeof t.hand_delta);
+    w.put(&t.wrist_motion, sizeof t.wrist_motion);
+    w.put(&t.swivel_rad, sizeof t.swivel_rad);
+    w.put(&t.near_swivel_rad, sizeof t.near_swivel_rad);
+    w.put(&t.max_wrist_step_rad, sizeof t.max_wrist_step_rad);
+    return k;
+  }
+
+  static FlatMemoTable<18, Solved>::Key at_key_of(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
+    FlatMemoTable<18, Solved>::Key k{};
+    KeyWriter w{reinterpret_cast<unsigned char*>(k.data())};
+    const Rig* rig_ptr = &rig;
+    const std::uint32_t s = static_cast<std::uint32_t>(side);
+    w.put(&rig_ptr, sizeof rig_ptr);
+    w.put(&s, sizeof s);
+    w.put(&t.point, sizeof t.point);
+    w.put(&t.contact_offset, sizeof t.contact_offset);
+    w.put(&t.hand_delta, sizeof t.hand_delta);
+    w.put(&t.wrist_motion, sizeof t.wrist_motion);
+    w.put(&swivel, sizeof swivel);
     return k;
   }
 };
@@ -688,19 +736,42 @@ std::unique_ptr<ArmSolveMemo::Table> take_table() {
 
 }  // namespace
 
-ArmSolveMemo::ArmSolveMemo() : table_(take_table()), outer_(active_memo) { active_memo = this; }
+ArmSolveMemo::ArmSolveMemo() : table_(take_table()), outer_(active_memo) {
+  active_memo = this;
+  active_table = table_.get();
+}
 ArmSolveMemo::~ArmSolveMemo() {
   active_memo = outer_;
+  active_table = outer_ ? outer_->table_.get() : nullptr;
   spare_tables.push_back(std::move(table_));
 }
-std::size_t ArmSolveMemo::hits() const { return table_->hits; }
+std::size_t ArmSolveMemo::hits() const { return table_->solves.hits; }
+std::size_t ArmSolveMemo::swivel_solve_hits() const { return table_->at.hits; }
+
+namespace {
+
+Solved solve_at(const Rig& rig, Side side, const ArmTarget& t, float swivel) {
+  if (!active_table || t.previous) return solve_at_uncached(rig, side, t, swivel);
+  auto& table = active_table->at;
+  const auto key = ArmSolveMemo::Table::at_key_of(rig, side, t, swivel);
+  const std::uint32_t h = table.hash_of(key);
+  if (const Solved* found = table.find(key, h)) {
+    ++table.hits;
+    return *found;
+  }
+  const Solved s = solve_at_uncached(rig, side, t, swivel);
+  table.add(key, h, s);
+  return s;
+}
+
+}  // namespace
 
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& t) {
   // A solve continuing a path (t.previous) reads the previous pose too: not remembered.
   if (!active_memo || t.previous) return solve_arm_uncached(rig, side, t);
-  ArmSolveMemo::Table& table = *active_memo->table_;
-  const ArmSolveMemo::Table::Key key = ArmSolveMemo::Table::key_of(rig, side, t);
-  const std::uint32_t h = ArmSolveMemo::Table::hash_of(key);
+  auto& table = active_memo->table_->solves;
+  const auto key = ArmSolveMemo::Table::key_of(rig, side, t);
+  const std::uint32_t h = table.hash_of(key);
   if (const ArmPose* found = table.find(key, h)) {
     ++table.hits;
     return *found;

@@ -32,7 +32,8 @@ struct ArmPose;
 
 // Every field but `previous` (and previous_wrist, read only with it) is part of ArmSolveMemo's key
 // (arm_ik.cpp, Table::key_of): a field added here must be added there too, or a remembered pose
-// would answer a different solve.
+// would answer a different solve; and to Table::at_key_of (the memo of one swivel's solve,
+// solve_at) if solve_at reads it without `previous`.
 struct ArmTarget {
   glm::vec3 point{0.0f};            // where the contact point must go (model space)
   glm::vec3 contact_offset{0.0f};   // contact point minus wrist, hand in its bind orientation
@@ -131,6 +132,10 @@ class ArmSolveMemo {
   ArmSolveMemo& operator=(const ArmSolveMemo&) = delete;
   // Solves answered from the memo so far.
   std::size_t hits() const;
+  // One swivel's solves (arm_ik.cpp solve_at, inside solve_arm) answered from the memo so far:
+  // the same target solved at the same swivel for a solve_arm that differs in what solve_at does
+  // not read (the body model, the touch, the near swivel, the search flags).
+  std::size_t swivel_solve_hits() const;
 
   struct Table;
 

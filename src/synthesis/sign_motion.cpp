@@ -578,7 +578,12 @@ struct Solver {
             }
         };
         try_ring(0.0f, 0.0f);
-        try_ring(0.08f, 0.0f);
+        // The second ring (8 cm out) only while the first ring's best pose still misses its
+        // orientation by more than 3 degrees or has a body cost: where it already realises the
+        // hand and keeps the arm clear, a place 8 cm further out (1.5 per metre of shift more)
+        // rarely wins (speed-wasm, docs/SYNTHESIS.md: 3 corpus signs change; its 16 solves were
+        // 2 % of the lexicon's instructions).
+        if (best.orientation_error_rad > 0.05f || best.body_cost > 0.0f) try_ring(0.08f, 0.0f);
         // Further out to the hand's own side only while the orientation still misses by more
         // than 10 degrees (so most signs pay nothing for it). Fingers pointing out to that side
         // with the palm down need the forearm to point that way: from a hand in front of the
@@ -2368,6 +2373,10 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
     }
     if (!redo) out->pushes = 0;
     int prev_pushes = 0;  // what the previous frame of this pass added to out->pushes
+    // One builder for the pass, set to a new one's state at each frame by assignment, which
+    // keeps its storage (4 k builders a lexicon pass were allocated per frame, speed-wasm).
+    const PoseBuilder fresh(rig);
+    PoseBuilder pb(rig);
     for (int f = 0; f < out->frame_count; ++f) {
       if (redo && !(*redo)[f]) continue;
       // A hold repeats its frame's hand states, and a frame is solved from its states alone but
@@ -2392,7 +2401,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       }
       const int pushes_before = out->pushes;
       const bool moving = f > 0 && !same_states(frames[f], frames[f - 1]);
-      PoseBuilder pb(rig);
+      pb = fresh;
       // Inactive hands keep the rest pose (the arm swung out of the other hand's way, if it is
       // in it: resting_arm_gives_way).
       for (int i = 0; i < 2; ++i)

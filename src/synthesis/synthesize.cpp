@@ -183,6 +183,10 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
 
   Timeline tl;
   tl.joints = J;
+  // Room for a one-sign phrase from rest and back (the lexicon's: 72 frames on average), so the
+  // frames are not copied as the timeline grows (speed-wasm); a longer phrase grows as before.
+  tl.frames.reserve(static_cast<size_t>(128) * static_cast<size_t>(J));
+  tl.exempt.reserve(128);
   Clip& clip = result.clip;
   std::vector<face::FaceCue> face_cues;  // one per sign and pause, for the face layer
   auto add_segment = [&](ClipSegment::Kind kind, const std::string& label, int word, int first, int last) {

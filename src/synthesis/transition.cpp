@@ -101,6 +101,14 @@ PenetrationMemo::PenetrationMemo(const SynthContext& ctx) : table_(1024, -1) {
   for (const ArmRig& a : rig.arms)
     for (int j : {a.upper, a.lower, a.hand})
       if (j >= 0 && j < rig.joint_count) hash_joints_.push_back(j);
+  // Room for a one-sign phrase's frames from rest and back (the lexicon's: 72 on average, 8,813
+  // adds for 141 signs), so the keys are not copied as they grow: the keys' regrowth was 12 M
+  // instructions of the lexicon's 1.47 G (speed-wasm). A longer phrase grows as before.
+  constexpr size_t kReservedFrames = 128;
+  keys_.reserve(kReservedFrames * 4 * joints_.size());
+  exempt_.reserve(kReservedFrames);
+  results_.reserve(kReservedFrames);
+  hashes_.reserve(kReservedFrames);
 }
 
 std::uint32_t PenetrationMemo::key_hash(const glm::quat* frame, std::uint8_t exempt) const {

@@ -539,5 +539,81 @@ TEST(SynthesisArmIk, TheArmSolveMemoKeepsEverySolveAsItsTableGrows) {
   EXPECT_EQ(memo.hits(), static_cast<std::size_t>(kSolves));
 }
 
+// The memo also remembers one swivel's solve (solve_at) inside solve_arm, keyed on what that solve
+// reads: a solve_arm that differs only in what solve_at does not read (here the body model and
+// the touch flag) reuses its swivels' solves, and one that differs in any input solve_at reads
+// (the point, the contact offset, the requested orientation, the wrist motion, the swivel, the
+// side, the rig) gets its own: each answer has the bits of the same solve_arm without a memo. A
+// key that left one of those inputs out would answer with the first target's pose.
+TEST(SynthesisArmIk, TheArmSolveMemoRemembersEachSwivelsSolveByEveryInputItReads) {
+  avatar::Avatar av = make_reference_humanoid();
+  Rig rig;
+  std::string error;
+  ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+  Rig wider = rig;  // a second rig, its right upper arm 3 cm longer
+  wider.arms[kRight].upper_len_m += 0.03f;
+  const BodyModel body = build_body_model(av, rig);
+  const ArmRig& a = rig.arms[kRight];
+  ArmTarget base;
+  base.point = rig.bind_pos[a.upper] + 0.3f * rig.forward - 0.2f * rig.up + 0.05f * rig.left;
+  base.contact_offset = 0.18f * a.finger_dir;
+  base.hand_delta = axis_angle(glm::normalize(rig.forward + 0.3f * rig.up), 1.2f);
+  base.auto_swivel = false;
+  base.swivel_rad = 0.4f;
+  struct Case {
+    const char* what;
+    const Rig* rig;
+    Side side;
+    ArmTarget t;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"base", &rig, kRight, base});
+  {
+    ArmTarget t = base;
+    t.point += 0.04f * rig.up;
+    cases.push_back({"point", &rig, kRight, t});
+  }
+  {
+    ArmTarget t = base;
+    t.contact_offset = 0.12f * a.finger_dir;
+    cases.push_back({"contact offset", &rig, kRight, t});
+  }
+  {
+    ArmTarget t = base;
+    t.hand_delta = axis_angle(glm::normalize(rig.forward + 0.3f * rig.up), 0.9f);
+    cases.push_back({"orientation", &rig, kRight, t});
+  }
+  {
+    ArmTarget t = base;
+    t.wrist_motion = axis_angle(a.finger_dir, 0.3f);
+    cases.push_back({"wrist motion", &rig, kRight, t});
+  }
+  {
+    ArmTarget t = base;
+    t.swivel_rad = 0.8f;
+    cases.push_back({"swivel", &rig, kRight, t});
+  }
+  cases.push_back({"side", &rig, kLeft, base});
+  cases.push_back({"rig", &wider, kRight, base});
+  std::vector<ArmPose> alone;
+  for (const Case& c : cases) alone.push_back(solve_arm(*c.rig, c.side, c.t));
+  auto same_bits = [](const ArmPose& x, const ArmPose& y) { return std::memcmp(&x, &y, sizeof(ArmPose)) == 0; };
+  // The precondition: each changed input changes the pose.
+  for (size_t i = 1; i < cases.size(); ++i) EXPECT_FALSE(same_bits(alone[i], alone[0])) << cases[i].what;
+  ArmTarget with_body = base;
+  with_body.body = &body;
+  with_body.hand_contact = true;
+  const ArmPose body_alone = solve_arm(rig, kRight, with_body);
+  ArmSolveMemo memo;
+  EXPECT_TRUE(same_bits(solve_arm(rig, kRight, base), alone[0]));
+  EXPECT_EQ(memo.swivel_solve_hits(), 0u);
+  // The body model and the touch are solve_arm's (its body cost), not solve_at's: the swivel's
+  // solve is reused, and the pose is still the memo-less one.
+  EXPECT_TRUE(same_bits(solve_arm(rig, kRight, with_body), body_alone));
+  EXPECT_EQ(memo.swivel_solve_hits(), 1u);
+  for (size_t i = 1; i < cases.size(); ++i)
+    EXPECT_TRUE(same_bits(solve_arm(*cases[i].rig, cases[i].side, cases[i].t), alone[i])) << cases[i].what;
+}
+
 }  // namespace
 }  // namespace sw::synthesis
