@@ -131,28 +131,10 @@ Chain solve_chain(const Rig& rig, const ChainBind& bind, const glm::vec3& wrist_
   glm::vec3 axis = safe_normalize(to, out_dir);
   float cos_a = clampf((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f);
   float sin_a = std::sqrt(std::max(0.0f, 1.0f - cos_a * cos_a));
-  // The swivel's zero: the elbow down, the way down square to the shoulder-wrist line. With the
-  // wrist straight above the shoulder joint that way vanishes and turned half round as the line
-  // passed the vertical (the wrist going from in front of the shoulder to behind it): at a
-  // constant swivel the elbow swung across in one frame (a pinched hand at the forehead replaced
-  // in place by a flat hand pointing forward: the elbow 194 mm in a frame, 243 mm change of step,
-  // on the project avatar). Within 21 degrees of the vertical (kSwivelZeroUpright and up) the way
-  // down leans forward, where it points for a wrist in front of the shoulder, by up to
-  // kSwivelZeroLean, so the zero keeps pointing forward as the line passes the vertical. A zero
-  // square to the line must vanish somewhere (the hairy-ball theorem): this moves the turn from
-  // straight up to some 15 degrees behind the vertical (measured: the forehead replace's wrist
-  // goes 11 degrees behind). Leaning from 32 degrees (0.85) moved the forehead replace's elbow
-  // less evenly (104 mm a frame on the reference humanoid, over the 100 mm bound); a lean of 3
-  // for wrists behind the vertical only, from 60 degrees, put the turn 50 degrees behind but
-  // swung the reference's elbow (77 mm change of step).
-  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f;
-  const float upright = clampf((glm::dot(axis, rig.up) - kSwivelZeroUpright) / (0.99f - kSwivelZeroUpright), 0.0f, 1.0f);
-  const float lean = kSwivelZeroLean * upright * upright * (3.0f - 2.0f * upright);
-  glm::vec3 down = reject(-rig.up + lean * rig.forward, axis);
-  if (glm::length(down) < 1e-3f) down = reject(-rig.forward, axis);
-  down = glm::normalize(down);
-  glm::vec3 outp = reject(out_dir, axis);
-  outp = safe_normalize(reject(outp, down), glm::cross(axis, down));
+  // The swivel's zero (swivel_zero below: the way down, leaned near the verticals, and an "out"
+  // of fixed handedness).
+  const SwivelZero zero = swivel_zero(axis, rig.up, rig.forward, out_dir);
+  const glm::vec3 down = zero.down, outp = zero.out;
   glm::vec3 sw = cos_swivel * down + sin_swivel * outp;
   c.swivel_axis = glm::cross(down, outp);  // d sw / d swivel = swivel_axis x sw
   glm::vec3 elbow = shoulder_pos + l1 * (cos_a * axis + sin_a * sw);
@@ -374,6 +356,56 @@ ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& p) {
   seg.elbow = seg.shoulder + p.upper * (rig.bind_pos[a.lower] - s0);
   seg.wrist = seg.elbow + p.lower * (rig.bind_pos[a.hand] - rig.bind_pos[a.lower]);
   return seg;
+}
+
+// The way down square to the axis. With the wrist straight above the shoulder joint that way
+// vanishes and turned half round as the line passed the vertical (the wrist going from in front
+// of the shoulder to behind it): at a constant swivel the elbow swung across in one frame (a
+// pinched hand at the forehead replaced in place by a flat hand pointing forward: the elbow 194
+// mm in a frame, 243 mm change of step, on the project avatar). Within 21 degrees of the vertical
+// (kSwivelZeroUpright and up) the way down leans forward, where it points for a wrist in front of
+// the shoulder, by up to kSwivelZeroLean, so the zero keeps pointing forward as the line passes
+// the vertical. A zero square to the line must vanish somewhere (the hairy-ball theorem): this
+// moves the turn from straight up to some 15 degrees behind the vertical (measured: the forehead
+// replace's wrist goes 11 degrees behind). Leaning from 32 degrees (0.85) moved the forehead
+// replace's elbow less evenly (104 mm a frame on the reference humanoid, over the 100 mm bound);
+// a lean of 3 for wrists behind the vertical only, from 60 degrees, put the turn 50 degrees
+// behind but swung the reference's elbow (77 mm change of step).
+// The same holds straight UNDER the joint (a fist hanging at the shoulder's plane, gołąb, or a
+// wrist passing under it, autobus: the way down is the wrist's few-cm horizontal offset reversed,
+// and turned half round as the wrist passed under the joint, the elbow 395-465 mm in a frame,
+// docs/SYNTHESIS.md elbow-leap): there the way down leans BACK, where it points for a wrist in
+// front of the shoulder, by the same amount, and the turn moves some 15 degrees behind the
+// downward vertical, where a bent arm's wrist hangs behind the shoulder (swivel-pref).
+// The "out" side: axis x down, with the handedness that points along out_dir for a wrist in
+// front of the shoulder (the old zero's there), fixed, so it turns with the axis continuously.
+SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir) {
+  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f;
+  auto smooth_lean = [&](float along) {
+    const float u = clampf((along - kSwivelZeroUpright) / (0.99f - kSwivelZeroUpright), 0.0f, 1.0f);
+    return kSwivelZeroLean * u * u * (3.0f - 2.0f * u);
+  };
+  const float up_dot = glm::dot(axis, up);
+  const float lean = smooth_lean(up_dot) - smooth_lean(-up_dot);
+  SwivelZero z;
+  glm::vec3 down = reject(-up + lean * forward, axis);
+  if (glm::length(down) < 1e-3f) down = reject(-forward, axis);
+  z.down = glm::normalize(down);
+  const float handed = glm::dot(out_dir, glm::cross(forward, -up)) < 0.0f ? -1.0f : 1.0f;
+  z.out = handed * safe_normalize(glm::cross(axis, z.down), out_dir);
+  return z;
+}
+
+float swivel_of(const SwivelZero& z, const glm::vec3& elbow_offset) {
+  return std::atan2(glm::dot(elbow_offset, z.out), glm::dot(elbow_offset, z.down));
+}
+
+// The lateral direction's part along `out` (the cosine of the angle between them), over
+// kOutShareBand: wrists whose lateral direction is within asin(kOutShareBand) of leaving the
+// elbow's circle blend the two sides' meanings.
+constexpr float kOutShareBand = 0.3f;
+float swivel_out_share(const SwivelZero& z, const glm::vec3& out_dir) {
+  return clampf(glm::dot(out_dir, z.out) / kOutShareBand, -1.0f, 1.0f);
 }
 
 namespace {
