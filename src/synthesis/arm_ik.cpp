@@ -380,13 +380,18 @@ ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& p) {
 // The "out" side: axis x down, with the handedness that points along out_dir for a wrist in
 // front of the shoulder (the old zero's there), fixed, so it turns with the axis continuously.
 SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir) {
-  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f;
+  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f, kSwivelZeroBackLean = 2.0f;
   auto smooth_lean = [&](float along) {
     const float u = clampf((along - kSwivelZeroUpright) / (0.99f - kSwivelZeroUpright), 0.0f, 1.0f);
     return kSwivelZeroLean * u * u * (3.0f - 2.0f * u);
   };
   const float up_dot = glm::dot(axis, up);
-  const float lean = smooth_lean(up_dot) - smooth_lean(-up_dot);
+  // Back under the joint only for a wrist behind it (kSwivelZeroBackLean per unit of the axis's
+  // backward part, so it outgrows the forward turn of the way down there): in front the way down
+  // already points back, and leaning it there too turned the zero of every wrist hanging within
+  // 21 degrees of the vertical (PAST1^ 4.6 -> 95.7 mm, delfin 2.0 -> 67.1 mm deep).
+  const float back_lean = std::min(smooth_lean(-up_dot), kSwivelZeroBackLean * std::max(0.0f, -glm::dot(axis, forward)));
+  const float lean = smooth_lean(up_dot) - back_lean;
   SwivelZero z;
   glm::vec3 down = reject(-up + lean * forward, axis);
   if (glm::length(down) < 1e-3f) down = reject(-forward, axis);
@@ -417,6 +422,9 @@ namespace {
 // The body cost decides among them when the elbow would enter the trunk.
 constexpr float kSwivelLo = -1.6f, kSwivelStep = 0.2f;
 constexpr int kSwivelCandidates = 19;
+// Behind the shoulder joint's coronal plane the range is mirrored, [-2.0, 1.6]: shifted down by
+// the range's asymmetry (solve_arm_uncached, docs/SYNTHESIS.md swivel-pref).
+constexpr float kSwivelMirrorShift = 0.4f;
 // The cost of a swivel away from the neighbouring pose's (ArmTarget::near_swivel_rad), per
 // radian: a radian of elbow swing weighs as much as two thirds of a radian of orientation error,
 // so a pose keeps its neighbour's swivel unless another realises the hand clearly better or keeps
@@ -510,9 +518,24 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
                                        &p->trunk_push_dir);
     return arm_trunk_cost(p->trunk_depth_m);
   };
-  const float hi = kSwivelLo + kSwivelStep * static_cast<float>(kSwivelCandidates - 1);
+  // The candidates' range and the comfort preference were numbers in the old zero, whose "out"
+  // was the lateral direction's side of the elbow's circle: behind the shoulder joint's coronal
+  // plane that is the negative side of swivel_zero's. Both are the old numbers times the
+  // lateral direction's share of `out` (swivel_out_share, +1 in front, -1 behind, through 0 in
+  // the plane), read at the wrist the target asks for (solve_at's first wrist), so they keep
+  // their meaning, "the elbow down and out", on both sides and move continuously across.
+  const ArmRig& a = rig.arms[side];
+  const ChainBind& bind = chain_bind(rig, side);
+  const glm::vec3 wrist_guess = t.point - t.hand_delta * t.contact_offset;
+  const glm::vec3 axis_guess = safe_normalize(wrist_guess - bind.s0, bind.out_dir);
+  const float out_share =
+      swivel_out_share(swivel_zero(axis_guess, rig.up, rig.forward, bind.out_dir), bind.out_dir);
+  // The old range [kSwivelLo, kSwivelLo + 3.6] in front, mirrored behind.
+  const float mirror = 0.5f * (1.0f - out_share);
+  const float lo = kSwivelLo - kSwivelMirrorShift * mirror;
+  const float hi = lo + kSwivelStep * static_cast<float>(kSwivelCandidates - 1);
   if (!t.auto_swivel) {
-    ArmPose p = carry_wrist_motion_excess(rig, side, t, solve_at(rig, side, t, t.swivel_rad), kSwivelLo, hi).pose;
+    ArmPose p = carry_wrist_motion_excess(rig, side, t, solve_at(rig, side, t, t.swivel_rad), lo, hi).pose;
     if (t.body) p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
     return p;
   }
@@ -520,10 +543,9 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   // targets above the shoulder; among candidates, the one that best realises the requested
   // orientation (wrist within limits), reaches and keeps the arm out of the trunk, close to that
   // preference (and to the neighbouring pose's swivel, ArmTarget::near_swivel_rad), wins.
-  const ArmRig& a = rig.arms[side];
   glm::vec3 v = t.point - rig.bind_pos[a.upper];
   float height = glm::dot(v, rig.up) / (a.upper_len_m + a.lower_len_m);
-  float preferred = 0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f);
+  float preferred = out_share * (0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f));
   ArmPose best;
   float best_cost = 1e30f;
   // The pose at a swivel and its cost.
@@ -544,10 +566,10 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   // search below does not solve them again).
   bool missed[kSwivelCandidates] = {};
   auto consider = [&](float swivel) {
-    if (swivel < kSwivelLo - 1e-4f || swivel > hi + 1e-4f) return;
+    if (swivel < lo - 1e-4f || swivel > hi + 1e-4f) return;
     ArmPose p;
     const float cost = score(swivel, &p);
-    const float grid = (swivel - kSwivelLo) / kSwivelStep;
+    const float grid = (swivel - lo) / kSwivelStep;
     const int g = static_cast<int>(std::lround(grid));
     if (std::fabs(grid - static_cast<float>(g)) < 1e-3f) missed[g] = p.orientation_error_rad > kOrientationAcceptanceRad;
     if (cost < best_cost) {
@@ -559,7 +581,7 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
     // The neighbouring pose's basin first: its swivel (on the candidate grid's range) and two
     // steps either side. It is left only when none of them keeps the arm out of the body and a
     // touch on its target (then the whole range below decides, the continuity cost still in).
-    const float near = clampf(t.near_swivel_rad, kSwivelLo, hi);
+    const float near = clampf(t.near_swivel_rad, lo, hi);
     for (float d : {0.0f, -kSwivelStep, kSwivelStep, -2.0f * kSwivelStep, 2.0f * kSwivelStep}) consider(near + d);
     const bool leave = best.body_cost > 0.03f || (t.hand_contact && best.reach_error_m > 0.005f) ||
                        best.orientation_error_rad > kNearBasinMaxOrientationErrorRad;
@@ -571,7 +593,7 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   }
   // Coarse to fine (the per-sign time budget): every other candidate first, then the two
   // neighbours of the best one.
-  for (int i = 0; i < kSwivelCandidates; i += 2) consider(kSwivelLo + kSwivelStep * static_cast<float>(i));
+  for (int i = 0; i < kSwivelCandidates; i += 2) consider(lo + kSwivelStep * static_cast<float>(i));
   const float coarse = best.swivel_rad;
   for (float d : {-kSwivelStep, kSwivelStep}) consider(coarse + d);
   if (!t.seek_orientation_acceptance || best.orientation_error_rad <= kOrientationAcceptanceRad) return best;
@@ -595,7 +617,7 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   float within_cost = 1e30f;
   for (int i = 0; i < kSwivelCandidates; ++i) {
     if (missed[i]) continue;
-    const float cost = score(kSwivelLo + kSwivelStep * static_cast<float>(i), &p);
+    const float cost = score(lo + kSwivelStep * static_cast<float>(i), &p);
     if (p.orientation_error_rad > kOrientationAcceptanceRad || p.body_cost > best.body_cost + 1e-4f ||
         p.trunk_depth_m > std::min(best.trunk_depth_m + 1e-4f, 0.002f) ||
         (t.hand_contact && p.reach_error_m > reach_ok) || p.reach_error_m > best.reach_error_m + 0.01f ||
