@@ -371,27 +371,21 @@ ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& p) {
 // replace's elbow less evenly (104 mm a frame on the reference humanoid, over the 100 mm bound);
 // a lean of 3 for wrists behind the vertical only, from 60 degrees, put the turn 50 degrees
 // behind but swung the reference's elbow (77 mm change of step).
-// The same holds straight UNDER the joint (a fist hanging at the shoulder's plane, gołąb, or a
-// wrist passing under it, autobus: the way down is the wrist's few-cm horizontal offset reversed,
-// and turned half round as the wrist passed under the joint, the elbow 395-465 mm in a frame,
-// docs/SYNTHESIS.md elbow-leap): there the way down leans BACK, where it points for a wrist in
-// front of the shoulder, by the same amount, and the turn moves some 15 degrees behind the
-// downward vertical, where a bent arm's wrist hangs behind the shoulder (swivel-pref).
+// Straight UNDER the joint the way down is the wrist's few-cm horizontal offset reversed and
+// still turns half round as the wrist passes under the joint (with `out`, so the zero turns by
+// pi there). Leaning it back there too (for a wrist behind the joint only, 2 per unit of the
+// axis's backward part, up to 0.5) was measured and not kept (docs/SYNTHESIS.md swivel-pref): it
+// moves the turn some 15 degrees behind the downward vertical, where the reference humanoid's
+// hanging fist in gołąb then leapt 460 mm.
 // The "out" side: axis x down, with the handedness that points along out_dir for a wrist in
 // front of the shoulder (the old zero's there), fixed, so it turns with the axis continuously.
 SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir) {
-  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f, kSwivelZeroBackLean = 2.0f;
+  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f;
   auto smooth_lean = [&](float along) {
     const float u = clampf((along - kSwivelZeroUpright) / (0.99f - kSwivelZeroUpright), 0.0f, 1.0f);
     return kSwivelZeroLean * u * u * (3.0f - 2.0f * u);
   };
-  const float up_dot = glm::dot(axis, up);
-  // Back under the joint only for a wrist behind it (kSwivelZeroBackLean per unit of the axis's
-  // backward part, so it outgrows the forward turn of the way down there): in front the way down
-  // already points back, and leaning it there too turned the zero of every wrist hanging within
-  // 21 degrees of the vertical (PAST1^ 4.6 -> 95.7 mm, delfin 2.0 -> 67.1 mm deep).
-  const float back_lean = std::min(smooth_lean(-up_dot), kSwivelZeroBackLean * std::max(0.0f, -glm::dot(axis, forward)));
-  const float lean = smooth_lean(up_dot) - back_lean;
+  const float lean = smooth_lean(glm::dot(axis, up));
   SwivelZero z;
   glm::vec3 down = reject(-up + lean * forward, axis);
   if (glm::length(down) < 1e-3f) down = reject(-forward, axis);

@@ -116,8 +116,8 @@ inline float arm_trunk_cost(float depth_m) { return 60.0f * (depth_m > 0.002f ? 
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& target);
 
 // The swivel's zero at a shoulder-wrist direction `axis` (unit): `down`, the way down square to
-// the axis (leaned forward near the upward vertical and back near the downward one, so it does
-// not turn half round as the wrist passes straight over or under the shoulder joint), and `out`,
+// the axis (leaned forward near the upward vertical, so it does not turn half round as the wrist
+// passes straight over the shoulder joint; straight under it it still does), and `out`,
 // the side a positive swivel turns the elbow to: axis x down with ONE handedness per arm (the one
 // that points along `out_dir`, the arm's lateral direction, for a wrist in front of the shoulder).
 // The old `out` (out_dir's part square to the axis and down) turned half round wherever the wrist

@@ -892,6 +892,42 @@ TEST_P(MotionSmoothness, HandsCaughtBetweenTheChinAndTheTorsoLeaveByOneWay) {
   EXPECT_LE(r.report.max_penetration_m, avatar ? 0.01f : 0.005f) << GetParam();
 }
 
+// Wrists that cross the shoulder joint's coronal plane (docs/SYNTHESIS.md elbow-leap,
+// swivel-pref): the HamNoSys corpus's gołąb (fists hanging at the plane below the stomach, the
+// wrist within a centimetre of it and straight under the joint) and szkoła (pjm_276: a flat hand
+// across the body at the far shoulder turning palm up, the wrist passing 1-3 cm behind the
+// plane), whole, from the rest pose and back. The swivel's old zero turned half round at that
+// plane (and under the joint), so the same swivel number put the elbow on the other side: on
+// main the project avatar's right elbow leapt 465 mm (gołąb) and 464 mm (szkoła) in a frame,
+// szkoła 118.8 mm deep. With the zero of fixed handedness and the way down leaned back under the
+// joint: the largest arm step held to 150 mm; gołąb to the 5 mm depth bound, szkoła to 15 mm
+// (measured 12.4 mm on the project avatar: its palm-up goal at the far shoulder is deep on every
+// swivel, elbow-flip).
+TEST_P(MotionSmoothness, AWristCrossingTheShouldersCoronalPlaneKeepsItsElbowOnOneSide) {
+  struct Case {
+    const char* names;
+    float depth_m;
+  };
+  for (const Case& c :
+       {Case{"hamsymmlr,hamfist,hamthumbacrossmod,hamextfingerd,hampalml,hambelowstomach,hamlrbeside,hamclose,"
+             "hammoveil,hamlargemod,hamrepeatfromstart",
+             0.005f},
+        Case{"hamflathand,hamfingerbendmod,hamextfingerl,hampalml,hamlrat,hamshouldertop,hambetween,hamshoulders,"
+             "hamtouch,hamreplace,hampalmu,hamfast,hamrepeatfromstart",
+             0.015f}}) {
+    SCOPED_TRACE(c.names);
+    const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(c.names);
+    ASSERT_EQ(read.size(), 1u);
+    ASSERT_TRUE(read[0].ok() && read[0].spec);
+    const SynthesisResult r = synthesize_sign(*read[0].spec, avatar_, SynthesisOptions{});
+    ASSERT_TRUE(r.ok());
+    const Worst w = measure(rig_, r.clip);
+    RecordProperty("worst_step_mm", std::to_string(w.step_m * 1000.0f) + " " + w.step_what);
+    EXPECT_LE(w.step_m, 0.15f) << GetParam() << ": " << w.step_what;
+    EXPECT_LE(r.report.max_penetration_m, c.depth_m) << GetParam();
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Rigs, MotionSmoothness, ::testing::Values("avatar", "reference"));
 
 }  // namespace
