@@ -133,7 +133,7 @@ Chain solve_chain(const Rig& rig, const ChainBind& bind, const glm::vec3& wrist_
   float sin_a = std::sqrt(std::max(0.0f, 1.0f - cos_a * cos_a));
   // The swivel's zero (swivel_zero below: the way down, leaned near the verticals, and an "out"
   // of fixed handedness).
-  const SwivelZero zero = swivel_zero(axis, rig.up, rig.forward, out_dir);
+  const SwivelZero zero = swivel_zero(axis, rig.up, rig.forward, out_dir, rig.fixed_handed_swivel_zero);
   const glm::vec3 down = zero.down, outp = zero.out;
   glm::vec3 sw = cos_swivel * down + sin_swivel * outp;
   c.swivel_axis = glm::cross(down, outp);  // d sw / d swivel = swivel_axis x sw
@@ -379,7 +379,10 @@ ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& p) {
 // hanging fist in gołąb then leapt 460 mm.
 // The "out" side: axis x down, with the handedness that points along out_dir for a wrist in
 // front of the shoulder (the old zero's there), fixed, so it turns with the axis continuously.
-SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir) {
+// The usual zero's "out" (fixed_handed false): out_dir's part square to the axis and to down,
+// which turns half round where the wrist crosses the shoulder joint's coronal plane (elbow-leap).
+SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir,
+                       bool fixed_handed) {
   constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f;
   auto smooth_lean = [&](float along) {
     const float u = clampf((along - kSwivelZeroUpright) / (0.99f - kSwivelZeroUpright), 0.0f, 1.0f);
@@ -390,6 +393,10 @@ SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::ve
   glm::vec3 down = reject(-up + lean * forward, axis);
   if (glm::length(down) < 1e-3f) down = reject(-forward, axis);
   z.down = glm::normalize(down);
+  if (!fixed_handed) {
+    z.out = safe_normalize(reject(reject(out_dir, axis), z.down), glm::cross(axis, z.down));
+    return z;
+  }
   const float handed = glm::dot(out_dir, glm::cross(forward, -up)) < 0.0f ? -1.0f : 1.0f;
   z.out = handed * safe_normalize(glm::cross(axis, z.down), out_dir);
   return z;
@@ -522,8 +529,11 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   const ChainBind& bind = chain_bind(rig, side);
   const glm::vec3 wrist_guess = t.point - t.hand_delta * t.contact_offset;
   const glm::vec3 axis_guess = safe_normalize(wrist_guess - bind.s0, bind.out_dir);
+  // In the usual zero (the default) the numbers are the old ones as they are: share 1.
   const float out_share =
-      swivel_out_share(swivel_zero(axis_guess, rig.up, rig.forward, bind.out_dir), bind.out_dir);
+      rig.fixed_handed_swivel_zero
+          ? swivel_out_share(swivel_zero(axis_guess, rig.up, rig.forward, bind.out_dir, true), bind.out_dir)
+          : 1.0f;
   // The old range [kSwivelLo, kSwivelLo + 3.6] in front, mirrored behind.
   const float mirror = 0.5f * (1.0f - out_share);
   const float lo = kSwivelLo - kSwivelMirrorShift * mirror;
@@ -702,7 +712,10 @@ struct ArmSolveMemo::Table {
     const std::uint32_t flags = static_cast<std::uint32_t>(side) | (t.auto_swivel ? 1u << 8 : 0u) |
                                 (t.hand_contact ? 1u << 9 : 0u) | (t.has_near_swivel ? 1u << 10 : 0u) |
                                 (t.seek_orientation_acceptance ? 1u << 11 : 0u) |
-                                (t.start_at_previous_wrist ? 1u << 12 : 0u);
+                                (t.start_at_previous_wrist ? 1u << 12 : 0u) |
+                                // A solve in one swivel zero is never answered with the other's
+                                // (docs/SYNTHESIS.md swivel-choice), whatever the rig's address.
+                                (rig.fixed_handed_swivel_zero ? 1u << 13 : 0u);
     put(&rig_ptr, sizeof rig_ptr);
     put(&body, sizeof body);
     put(&flags, sizeof flags);

@@ -127,7 +127,11 @@ ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& target);
 struct SwivelZero {
   glm::vec3 down{0.0f}, out{0.0f};
 };
-SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir);
+// `fixed_handed` false (the default, Rig::fixed_handed_swivel_zero): the usual zero, whose `out` is
+// out_dir's part square to the axis and `down` (half round at the coronal plane), to the bit as
+// it was before the choice (docs/SYNTHESIS.md swivel-choice).
+SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir,
+                       bool fixed_handed);
 // The elbow's swivel in this zero for an elbow offset from the shoulder joint (any part along the
 // axis is ignored): atan2 of its parts along `out` and `down`.
 float swivel_of(const SwivelZero& z, const glm::vec3& elbow_offset);
