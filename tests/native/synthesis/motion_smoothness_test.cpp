@@ -928,6 +928,43 @@ TEST_P(MotionSmoothness, AWristCrossingTheShouldersCoronalPlaneKeepsItsElbowOnOn
   }
 }
 
+// The same two signs as one phrase (docs/SYNTHESIS.md swivel-choice): each may be solved in the
+// swivel zero of fixed handedness while the phrase's transitions plan in the usual one
+// (transition.cpp pose_swivel reads the posed elbows in the phrase's zero), so the joins between
+// signs of either zero must not leap either: the largest arm step of the whole phrase, both
+// transitions between the signs included, held to the single signs' 150 mm.
+TEST_P(MotionSmoothness, SignsSolvedInEitherSwivelZeroJoinWithoutALeap) {
+  const char* szkola =
+      "hamflathand,hamfingerbendmod,hamextfingerl,hampalml,hamlrat,hamshouldertop,hambetween,hamshoulders,"
+      "hamtouch,hamreplace,hampalmu,hamfast,hamrepeatfromstart";
+  const char* golab =
+      "hamsymmlr,hamfist,hamthumbacrossmod,hamextfingerd,hampalml,hambelowstomach,hamlrbeside,hamclose,"
+      "hammoveil,hamlargemod,hamrepeatfromstart";
+  std::vector<notation::SignParse> read;
+  for (const char* names : {szkola, golab, szkola}) {
+    std::vector<notation::SignParse> one = notation::parse_hamnosys_text(names);
+    ASSERT_EQ(one.size(), 1u) << names;
+    read.push_back(std::move(one[0]));
+  }
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  std::vector<PhraseItem> items;
+  for (const notation::SignParse& p : read) {
+    ASSERT_TRUE(p.ok() && p.spec);
+    PhraseItem item;
+    item.sign = *p.spec;
+    items.push_back(item);
+  }
+  SynthesisOptions opt;
+  opt.start_from_rest = true;
+  const SynthesisResult r = synth.phrase(items, opt);
+  ASSERT_TRUE(r.ok());
+  const Worst w = measure(rig_, r.clip);
+  RecordProperty("worst_step_mm", std::to_string(w.step_m * 1000.0f) + " " + w.step_what);
+  EXPECT_LE(w.step_m, 0.15f) << GetParam() << ": " << w.step_what;
+  EXPECT_LE(r.report.max_penetration_m, 0.015f) << GetParam();
+}
+
 INSTANTIATE_TEST_SUITE_P(Rigs, MotionSmoothness, ::testing::Values("avatar", "reference"));
 
 }  // namespace
