@@ -131,28 +131,10 @@ Chain solve_chain(const Rig& rig, const ChainBind& bind, const glm::vec3& wrist_
   glm::vec3 axis = safe_normalize(to, out_dir);
   float cos_a = clampf((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f);
   float sin_a = std::sqrt(std::max(0.0f, 1.0f - cos_a * cos_a));
-  // The swivel's zero: the elbow down, the way down square to the shoulder-wrist line. With the
-  // wrist straight above the shoulder joint that way vanishes and turned half round as the line
-  // passed the vertical (the wrist going from in front of the shoulder to behind it): at a
-  // constant swivel the elbow swung across in one frame (a pinched hand at the forehead replaced
-  // in place by a flat hand pointing forward: the elbow 194 mm in a frame, 243 mm change of step,
-  // on the project avatar). Within 21 degrees of the vertical (kSwivelZeroUpright and up) the way
-  // down leans forward, where it points for a wrist in front of the shoulder, by up to
-  // kSwivelZeroLean, so the zero keeps pointing forward as the line passes the vertical. A zero
-  // square to the line must vanish somewhere (the hairy-ball theorem): this moves the turn from
-  // straight up to some 15 degrees behind the vertical (measured: the forehead replace's wrist
-  // goes 11 degrees behind). Leaning from 32 degrees (0.85) moved the forehead replace's elbow
-  // less evenly (104 mm a frame on the reference humanoid, over the 100 mm bound); a lean of 3
-  // for wrists behind the vertical only, from 60 degrees, put the turn 50 degrees behind but
-  // swung the reference's elbow (77 mm change of step).
-  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f;
-  const float upright = clampf((glm::dot(axis, rig.up) - kSwivelZeroUpright) / (0.99f - kSwivelZeroUpright), 0.0f, 1.0f);
-  const float lean = kSwivelZeroLean * upright * upright * (3.0f - 2.0f * upright);
-  glm::vec3 down = reject(-rig.up + lean * rig.forward, axis);
-  if (glm::length(down) < 1e-3f) down = reject(-rig.forward, axis);
-  down = glm::normalize(down);
-  glm::vec3 outp = reject(out_dir, axis);
-  outp = safe_normalize(reject(outp, down), glm::cross(axis, down));
+  // The swivel's zero (swivel_zero below: the way down, leaned near the verticals, and an "out"
+  // of fixed handedness).
+  const SwivelZero zero = swivel_zero(axis, rig.up, rig.forward, out_dir, rig.fixed_handed_swivel_zero);
+  const glm::vec3 down = zero.down, outp = zero.out;
   glm::vec3 sw = cos_swivel * down + sin_swivel * outp;
   c.swivel_axis = glm::cross(down, outp);  // d sw / d swivel = swivel_axis x sw
   glm::vec3 elbow = shoulder_pos + l1 * (cos_a * axis + sin_a * sw);
@@ -380,6 +362,62 @@ ArmSegments arm_segments(const Rig& rig, Side side, const ArmPose& p) {
   return seg;
 }
 
+// The way down square to the axis. With the wrist straight above the shoulder joint that way
+// vanishes and turned half round as the line passed the vertical (the wrist going from in front
+// of the shoulder to behind it): at a constant swivel the elbow swung across in one frame (a
+// pinched hand at the forehead replaced in place by a flat hand pointing forward: the elbow 194
+// mm in a frame, 243 mm change of step, on the project avatar). Within 21 degrees of the vertical
+// (kSwivelZeroUpright and up) the way down leans forward, where it points for a wrist in front of
+// the shoulder, by up to kSwivelZeroLean, so the zero keeps pointing forward as the line passes
+// the vertical. A zero square to the line must vanish somewhere (the hairy-ball theorem): this
+// moves the turn from straight up to some 15 degrees behind the vertical (measured: the forehead
+// replace's wrist goes 11 degrees behind). Leaning from 32 degrees (0.85) moved the forehead
+// replace's elbow less evenly (104 mm a frame on the reference humanoid, over the 100 mm bound);
+// a lean of 3 for wrists behind the vertical only, from 60 degrees, put the turn 50 degrees
+// behind but swung the reference's elbow (77 mm change of step).
+// Straight UNDER the joint the way down is the wrist's few-cm horizontal offset reversed and
+// still turns half round as the wrist passes under the joint (with `out`, so the zero turns by
+// pi there). Leaning it back there too (for a wrist behind the joint only, 2 per unit of the
+// axis's backward part, up to 0.5) was measured and not kept (docs/SYNTHESIS.md swivel-pref): it
+// moves the turn some 15 degrees behind the downward vertical, where the reference humanoid's
+// hanging fist in gołąb then leapt 460 mm.
+// The "out" side: axis x down, with the handedness that points along out_dir for a wrist in
+// front of the shoulder (the old zero's there), fixed, so it turns with the axis continuously.
+// The usual zero's "out" (fixed_handed false): out_dir's part square to the axis and to down,
+// which turns half round where the wrist crosses the shoulder joint's coronal plane (elbow-leap).
+SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir,
+                       bool fixed_handed) {
+  constexpr float kSwivelZeroUpright = 0.93f, kSwivelZeroLean = 0.5f;
+  auto smooth_lean = [&](float along) {
+    const float u = clampf((along - kSwivelZeroUpright) / (0.99f - kSwivelZeroUpright), 0.0f, 1.0f);
+    return kSwivelZeroLean * u * u * (3.0f - 2.0f * u);
+  };
+  const float lean = smooth_lean(glm::dot(axis, up));
+  SwivelZero z;
+  glm::vec3 down = reject(-up + lean * forward, axis);
+  if (glm::length(down) < 1e-3f) down = reject(-forward, axis);
+  z.down = glm::normalize(down);
+  if (!fixed_handed) {
+    z.out = safe_normalize(reject(reject(out_dir, axis), z.down), glm::cross(axis, z.down));
+    return z;
+  }
+  const float handed = glm::dot(out_dir, glm::cross(forward, -up)) < 0.0f ? -1.0f : 1.0f;
+  z.out = handed * safe_normalize(glm::cross(axis, z.down), out_dir);
+  return z;
+}
+
+float swivel_of(const SwivelZero& z, const glm::vec3& elbow_offset) {
+  return std::atan2(glm::dot(elbow_offset, z.out), glm::dot(elbow_offset, z.down));
+}
+
+// The lateral direction's part along `out` (the cosine of the angle between them), over
+// kOutShareBand: wrists whose lateral direction is within asin(kOutShareBand) of leaving the
+// elbow's circle blend the two sides' meanings.
+constexpr float kOutShareBand = 0.3f;
+float swivel_out_share(const SwivelZero& z, const glm::vec3& out_dir) {
+  return clampf(glm::dot(out_dir, z.out) / kOutShareBand, -1.0f, 1.0f);
+}
+
 namespace {
 
 // Swivel candidates (radians, 0 elbow down, + elbow out): from the elbow in front of the body
@@ -389,6 +427,9 @@ namespace {
 // The body cost decides among them when the elbow would enter the trunk.
 constexpr float kSwivelLo = -1.6f, kSwivelStep = 0.2f;
 constexpr int kSwivelCandidates = 19;
+// Behind the shoulder joint's coronal plane the range is mirrored, [-2.0, 1.6]: shifted down by
+// the range's asymmetry (solve_arm_uncached, docs/SYNTHESIS.md swivel-pref).
+constexpr float kSwivelMirrorShift = 0.4f;
 // The cost of a swivel away from the neighbouring pose's (ArmTarget::near_swivel_rad), per
 // radian: a radian of elbow swing weighs as much as two thirds of a radian of orientation error,
 // so a pose keeps its neighbour's swivel unless another realises the hand clearly better or keeps
@@ -482,9 +523,27 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
                                        &p->trunk_push_dir);
     return arm_trunk_cost(p->trunk_depth_m);
   };
-  const float hi = kSwivelLo + kSwivelStep * static_cast<float>(kSwivelCandidates - 1);
+  // The candidates' range and the comfort preference were numbers in the old zero, whose "out"
+  // was the lateral direction's side of the elbow's circle: behind the shoulder joint's coronal
+  // plane that is the negative side of swivel_zero's. Both are the old numbers times the
+  // lateral direction's share of `out` (swivel_out_share, +1 in front, -1 behind, through 0 in
+  // the plane), read at the wrist the target asks for (solve_at's first wrist), so they keep
+  // their meaning, "the elbow down and out", on both sides and move continuously across.
+  const ArmRig& a = rig.arms[side];
+  const ChainBind& bind = chain_bind(rig, side);
+  const glm::vec3 wrist_guess = t.point - t.hand_delta * t.contact_offset;
+  const glm::vec3 axis_guess = safe_normalize(wrist_guess - bind.s0, bind.out_dir);
+  // In the usual zero (the default) the numbers are the old ones as they are: share 1.
+  const float out_share =
+      rig.fixed_handed_swivel_zero
+          ? swivel_out_share(swivel_zero(axis_guess, rig.up, rig.forward, bind.out_dir, true), bind.out_dir)
+          : 1.0f;
+  // The old range [kSwivelLo, kSwivelLo + 3.6] in front, mirrored behind.
+  const float mirror = 0.5f * (1.0f - out_share);
+  const float lo = kSwivelLo - kSwivelMirrorShift * mirror;
+  const float hi = lo + kSwivelStep * static_cast<float>(kSwivelCandidates - 1);
   if (!t.auto_swivel) {
-    ArmPose p = carry_wrist_motion_excess(rig, side, t, solve_at(rig, side, t, t.swivel_rad), kSwivelLo, hi).pose;
+    ArmPose p = carry_wrist_motion_excess(rig, side, t, solve_at(rig, side, t, t.swivel_rad), lo, hi).pose;
     if (t.body) p.body_cost = clearance(&p) + elbow_behind_cost(rig, side, p);
     return p;
   }
@@ -492,10 +551,9 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   // targets above the shoulder; among candidates, the one that best realises the requested
   // orientation (wrist within limits), reaches and keeps the arm out of the trunk, close to that
   // preference (and to the neighbouring pose's swivel, ArmTarget::near_swivel_rad), wins.
-  const ArmRig& a = rig.arms[side];
   glm::vec3 v = t.point - rig.bind_pos[a.upper];
   float height = glm::dot(v, rig.up) / (a.upper_len_m + a.lower_len_m);
-  float preferred = 0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f);
+  float preferred = out_share * (0.44f + 0.6f * clampf(1.5f * (height + 0.2f), 0.0f, 1.0f));
   ArmPose best;
   float best_cost = 1e30f;
   // The pose at a swivel and its cost.
@@ -516,10 +574,10 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   // search below does not solve them again).
   bool missed[kSwivelCandidates] = {};
   auto consider = [&](float swivel) {
-    if (swivel < kSwivelLo - 1e-4f || swivel > hi + 1e-4f) return;
+    if (swivel < lo - 1e-4f || swivel > hi + 1e-4f) return;
     ArmPose p;
     const float cost = score(swivel, &p);
-    const float grid = (swivel - kSwivelLo) / kSwivelStep;
+    const float grid = (swivel - lo) / kSwivelStep;
     const int g = static_cast<int>(std::lround(grid));
     if (std::fabs(grid - static_cast<float>(g)) < 1e-3f) missed[g] = p.orientation_error_rad > kOrientationAcceptanceRad;
     if (cost < best_cost) {
@@ -531,7 +589,7 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
     // The neighbouring pose's basin first: its swivel (on the candidate grid's range) and two
     // steps either side. It is left only when none of them keeps the arm out of the body and a
     // touch on its target (then the whole range below decides, the continuity cost still in).
-    const float near = clampf(t.near_swivel_rad, kSwivelLo, hi);
+    const float near = clampf(t.near_swivel_rad, lo, hi);
     for (float d : {0.0f, -kSwivelStep, kSwivelStep, -2.0f * kSwivelStep, 2.0f * kSwivelStep}) consider(near + d);
     const bool leave = best.body_cost > 0.03f || (t.hand_contact && best.reach_error_m > 0.005f) ||
                        best.orientation_error_rad > kNearBasinMaxOrientationErrorRad;
@@ -543,7 +601,7 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   }
   // Coarse to fine (the per-sign time budget): every other candidate first, then the two
   // neighbours of the best one.
-  for (int i = 0; i < kSwivelCandidates; i += 2) consider(kSwivelLo + kSwivelStep * static_cast<float>(i));
+  for (int i = 0; i < kSwivelCandidates; i += 2) consider(lo + kSwivelStep * static_cast<float>(i));
   const float coarse = best.swivel_rad;
   for (float d : {-kSwivelStep, kSwivelStep}) consider(coarse + d);
   if (!t.seek_orientation_acceptance || best.orientation_error_rad <= kOrientationAcceptanceRad) return best;
@@ -567,7 +625,7 @@ ArmPose solve_arm_uncached(const Rig& rig, Side side, const ArmTarget& t) {
   float within_cost = 1e30f;
   for (int i = 0; i < kSwivelCandidates; ++i) {
     if (missed[i]) continue;
-    const float cost = score(kSwivelLo + kSwivelStep * static_cast<float>(i), &p);
+    const float cost = score(lo + kSwivelStep * static_cast<float>(i), &p);
     if (p.orientation_error_rad > kOrientationAcceptanceRad || p.body_cost > best.body_cost + 1e-4f ||
         p.trunk_depth_m > std::min(best.trunk_depth_m + 1e-4f, 0.002f) ||
         (t.hand_contact && p.reach_error_m > reach_ok) || p.reach_error_m > best.reach_error_m + 0.01f ||
@@ -687,7 +745,10 @@ struct ArmSolveMemo::Table {
     const std::uint32_t flags = static_cast<std::uint32_t>(side) | (t.auto_swivel ? 1u << 8 : 0u) |
                                 (t.hand_contact ? 1u << 9 : 0u) | (t.has_near_swivel ? 1u << 10 : 0u) |
                                 (t.seek_orientation_acceptance ? 1u << 11 : 0u) |
-                                (t.start_at_previous_wrist ? 1u << 12 : 0u);
+                                (t.start_at_previous_wrist ? 1u << 12 : 0u) |
+                                // A solve in one swivel zero is never answered with the other's
+                                // (docs/SYNTHESIS.md swivel-choice), whatever the rig's address.
+                                (rig.fixed_handed_swivel_zero ? 1u << 13 : 0u);
     w.put(&rig_ptr, sizeof rig_ptr);
     w.put(&body, sizeof body);
     w.put(&flags, sizeof flags);
@@ -705,7 +766,8 @@ struct ArmSolveMemo::Table {
     FlatMemoTable<18, Solved>::Key k{};
     KeyWriter w{reinterpret_cast<unsigned char*>(k.data())};
     const Rig* rig_ptr = &rig;
-    const std::uint32_t s = static_cast<std::uint32_t>(side);
+    // The side, and the swivel zero the chain is solved in (as key_of's flags).
+    const std::uint32_t s = static_cast<std::uint32_t>(side) | (rig.fixed_handed_swivel_zero ? 1u << 13 : 0u);
     w.put(&rig_ptr, sizeof rig_ptr);
     w.put(&s, sizeof s);
     w.put(&t.point, sizeof t.point);

@@ -116,6 +116,34 @@ inline float arm_trunk_cost(float depth_m) { return 60.0f * (depth_m > 0.002f ? 
 
 ArmPose solve_arm(const Rig& rig, Side side, const ArmTarget& target);
 
+// The swivel's zero at a shoulder-wrist direction `axis` (unit): `down`, the way down square to
+// the axis (leaned forward near the upward vertical, so it does not turn half round as the wrist
+// passes straight over the shoulder joint; straight under it it still does), and `out`,
+// the side a positive swivel turns the elbow to: axis x down with ONE handedness per arm (the one
+// that points along `out_dir`, the arm's lateral direction, for a wrist in front of the shoulder).
+// The old `out` (out_dir's part square to the axis and down) turned half round wherever the wrist
+// crossed the shoulder joint's coronal plane, and the same swivel number put the elbow on the
+// other side (docs/SYNTHESIS.md elbow-leap, swivel-pref). up, forward: the body's directions (the
+// trunk's turn applied where it turns, transition.cpp pose_swivel).
+struct SwivelZero {
+  glm::vec3 down{0.0f}, out{0.0f};
+};
+// `fixed_handed` false (the default, Rig::fixed_handed_swivel_zero): the usual zero, whose `out` is
+// out_dir's part square to the axis and `down` (half round at the coronal plane), to the bit as
+// it was before the choice (docs/SYNTHESIS.md swivel-choice).
+SwivelZero swivel_zero(const glm::vec3& axis, const glm::vec3& up, const glm::vec3& forward, const glm::vec3& out_dir,
+                       bool fixed_handed);
+// The elbow's swivel in this zero for an elbow offset from the shoulder joint (any part along the
+// axis is ignored): atan2 of its parts along `out` and `down`.
+float swivel_of(const SwivelZero& z, const glm::vec3& elbow_offset);
+// How far "out" (the arm's lateral direction) lies along the zero's `out`, as a share in [-1, 1]:
+// +1 where out_dir is on the elbow's circle on the positive side (a wrist in front of the
+// shoulder), -1 where it is on the negative side (a wrist behind the shoulder joint's coronal
+// plane), ramping through 0 where the lateral direction leaves the circle (the wrist in that
+// plane). solve_arm's comfort preference ("the elbow down and out") and its candidate range are
+// its old numbers times this share (docs/SYNTHESIS.md swivel-pref).
+float swivel_out_share(const SwivelZero& z, const glm::vec3& out_dir);
+
 // While one lives (on this thread), solve_arm remembers what it returned for a target solved
 // free (no ArmTarget::previous) and returns the same pose when it is asked again with the same
 // rig, side and target to the bit: a sign's planning asks for the same solve again and again

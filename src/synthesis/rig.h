@@ -54,6 +54,12 @@ struct Rig {
   std::array<ArmRig, 2> arms;             // kLeft, kRight
   glm::vec3 up{0, 1, 0}, left{1, 0, 0}, forward{0, 0, 1};  // measured body frame
   float shoulder_width_m = 0.0f;
+  // The arm solve's swivel zero (arm_ik.h swivel_zero): false, the usual one (its "out" the arm's
+  // lateral side, half round where the wrist crosses the shoulder joint's coronal plane); true,
+  // the zero of fixed handedness (no half turn there), the per-sign alternative that
+  // synthesize_sign_motion tries where the usual zero's clip leaps (docs/SYNTHESIS.md
+  // swivel-choice). Not a property of the body: set on a copy of the context for that solve.
+  bool fixed_handed_swivel_zero = false;
 
   // Tip position in the bind pose (the tip joint, or the distal bone extended).
   glm::vec3 bind_tip(Side side, int finger) const;

@@ -2906,11 +2906,85 @@ std::vector<StepPeaks> step_peaks(const Rig& rig, const SignMotion& m,
   return out;
 }
 
+// A sign's clip's deepest frame (returned) and largest arm step (`step`), measured as the clip has
+// them by default: after the elbow's path is made continuous (synthesize.cpp, elbow_path.h),
+// which moves the elbows of a sign whose wrist changes side. Measured without it, 4 signs newly
+// stepped over 100 mm in a frame (wynajmować 83 -> 173 mm). Also where the options switch the
+// elbow's path off: the solve is then the same one, with and without it
+// (CorpusSynthesis.CarryingAnElbowRound... compares the two). ctx: the phrase's (the measures
+// read positions, the same whichever swivel zero solved the clip).
+float sign_depth_and_step(const SynthContext& ctx, const SignMotion& m, float* step) {
+  Clip c;
+  c.fps = ctx.options.fps;
+  c.frame_count = m.frame_count;
+  c.rotations = m.rotations;
+  continue_elbow_paths(ctx.rig, &ctx.body, c.fps, c.frame_count, &c.rotations);
+  *step = measure_frame_steps(ctx.rig, c).step_m;
+  std::string what;
+  return max_penetration(ctx, c.rotations.data(), c.frame_count, m.exempt.data(), &what, nullptr);
+}
+
+// Whether a sign's second solve is kept over its first: its deepest frame no deeper
+// (kBranchSignSlackM) and its largest arm step smaller (frame-branch, swivel-choice).
+bool sign_second_is_better(const SynthContext& ctx, const SignMotion& first, const SignMotion& second) {
+  float step = 0.0f, second_step = 0.0f;
+  const float depth = sign_depth_and_step(ctx, first, &step);
+  const float second_depth = sign_depth_and_step(ctx, second, &second_step);
+  return second_depth <= depth + kBranchSignSlackM && second_step < step;
+}
+
+// A sign's clip's largest arm step over which it is solved again in the swivel zero of fixed
+// handedness (docs/SYNTHESIS.md swivel-choice): no signer's elbow moves 15 cm in a frame (at 30
+// fps, 4.5 m/s); the lexicon's largest step is 68 mm, so it is never solved twice; main's
+// HamNoSys corpus has 52 signs over it, among them the usual zero's half turns at the shoulder
+// joint's coronal plane (szkoła 464 mm, TO-SLEEP2^ 553 mm: elbow-leap).
+constexpr float kSwivelChoiceStepM = 0.15f;
+
+bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::SignSpec& sign,
+                                    const std::string& where, SignMotion* out,
+                                    std::vector<SynthesisError>* errors, SignMotion* usual_alternative);
+
 }  // namespace
 
+// The sign in the usual swivel zero, and where its clip still leaps (an arm step over
+// kSwivelChoiceStepM, measured after the elbow's path) once more in the zero of fixed handedness
+// (Rig::fixed_handed_swivel_zero, on a copy of the context), kept by the branch choice's rule:
+// no deeper (kBranchSignSlackM) and a smaller largest arm step. The usual zero turns the elbow
+// half round where the wrist crosses the shoulder joint's coronal plane (elbow-leap); the fixed
+// one does not, but as every sign's zero it sank hands at the shoulders (swivel-pref: 54 signs
+// deeper by > 2 mm), so each sign keeps the zero that serves it. The clips without the jam rule
+// (`usual_alternative`) are chosen between by the same rule on their own, as in the branch
+// choice. The alternative's errors repeat the first solve's (the same sign and key pose).
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors, SignMotion* usual_alternative) {
+  if (!synthesize_sign_motion_in_zero(ctx, sign, where, out, errors, usual_alternative)) return false;
+  if (ctx.rig.fixed_handed_swivel_zero || !ctx.options.avoid_collisions || out->frame_count == 0) return true;
+  float step = 0.0f;
+  sign_depth_and_step(ctx, *out, &step);
+  if (!(step > kSwivelChoiceStepM)) return true;
+  SynthContext fixed = ctx;
+  fixed.rig.fixed_handed_swivel_zero = true;
+  SignMotion other, other_alternative;
+  std::vector<SynthesisError> repeated;
+  if (!synthesize_sign_motion_in_zero(fixed, sign, where, &other, &repeated,
+                                      usual_alternative ? &other_alternative : nullptr))
+    return true;
+  if (usual_alternative && (usual_alternative->frame_count > 0 || other_alternative.frame_count > 0)) {
+    const SignMotion& first = usual_alternative->frame_count > 0 ? *usual_alternative : *out;
+    const SignMotion& second = other_alternative.frame_count > 0 ? other_alternative : other;
+    SignMotion kept = sign_second_is_better(ctx, first, second) ? second : first;
+    *usual_alternative = std::move(kept);
+  }
+  if (sign_second_is_better(ctx, *out, other)) *out = std::move(other);
+  return true;
+}
+
+namespace {
+
+bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::SignSpec& sign,
+                                    const std::string& where, SignMotion* out,
+                                    std::vector<SynthesisError>* errors, SignMotion* usual_alternative) {
   // The sign's arm solves asked again with the same target are answered from memory (arm_ik.h;
   // the clip is the same to the bit), also in the second solve at a stretched timing below.
   ArmSolveMemo arm_solves;
@@ -2936,26 +3010,9 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     if (synthesize_sign_motion_timed(ctx, sign, where, {}, true, &chosen, &repeated, &chosen_spans, nullptr,
                                      usual_alternative ? &chosen_alternative : nullptr) &&
         chosen_spans.size() == spans.size()) {
-      // Measured as the clip has them by default: after the elbow's path is made continuous
-      // (synthesize.cpp, elbow_path.h), which moves the elbows of a sign whose wrist changes side.
-      // Measured without it, 4 signs newly stepped over 100 mm in a frame (wynajmować
-      // 83 -> 173 mm). Also where the options switch the elbow's path off: the solve is then the
-      // same one, with and without it (CorpusSynthesis.CarryingAnElbowRound... compares the two).
-      auto depth_and_step = [&](const SignMotion& m, float* step) {
-        Clip c;
-        c.fps = ctx.options.fps;
-        c.frame_count = m.frame_count;
-        c.rotations = m.rotations;
-        continue_elbow_paths(ctx.rig, &ctx.body, c.fps, c.frame_count, &c.rotations);
-        *step = measure_frame_steps(ctx.rig, c).step_m;
-        std::string what;
-        return max_penetration(ctx, c.rotations.data(), c.frame_count, m.exempt.data(), &what, nullptr);
-      };
+      // Measured as the clip has them by default, after the elbow's path (sign_depth_and_step).
       auto second_is_better = [&](const SignMotion& first, const SignMotion& second) {
-        float step = 0.0f, second_step = 0.0f;
-        const float depth = depth_and_step(first, &step);
-        const float second_depth = depth_and_step(second, &second_step);
-        return second_depth <= depth + kBranchSignSlackM && second_step < step;
+        return sign_second_is_better(ctx, first, second);
       };
       // The clips without the jam rule (each solve's alternative, or its clip where it has none)
       // are chosen between by the same rule, on their own: the caller weighs the jam rule's
@@ -3022,5 +3079,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   }
   return true;
 }
+
+}  // namespace
 
 }  // namespace sw::synthesis

@@ -854,16 +854,24 @@ ThoraxFrame thorax_frame(const SynthContext& ctx, const PoseBuilder& posed, cons
   return f;
 }
 
-// The elbow's swivel in a posed arm, in solve_arm's convention (arm_ik.cpp solve_chain): the
-// angle of the elbow about the shoulder-wrist axis, 0 with the elbow down, positive out to the
-// arm's side. `frame`: the turn of the trunk the arm hangs from (the body's directions turn with
-// it; see ThoraxFrame below).
+// The elbow's swivel in a posed arm, in solve_arm's convention: the angle of the elbow about the
+// shoulder-wrist axis, 0 with the elbow down, positive out to the arm's side; in the rig's zero
+// (Rig::fixed_handed_swivel_zero: the usual one, or arm_ik.h swivel_zero's of one handedness on
+// both sides of the shoulder joint's coronal plane). A phrase's transitions read every sign's arm
+// in the phrase's zero (the usual one), also a sign solved in the other: the reading is of elbow
+// positions, so the turn it plans is the same elbow motion whichever zero solved the sign.
+// `frame`: the turn of the trunk the arm hangs from (the body's directions turn with it; see
+// ThoraxFrame below).
 float pose_swivel(const Rig& rig, Side side, const PoseBuilder& pose, const glm::quat& frame = glm::quat(1, 0, 0, 0)) {
   const ArmRig& a = rig.arms[side];
   const glm::vec3 up = frame * rig.up, left = frame * rig.left, forward = frame * rig.forward;
   const glm::vec3 shoulder = pose.position(a.upper);
   const glm::vec3 axis = safe_normalize(pose.position(a.hand) - shoulder, forward);
   const glm::vec3 out_dir = side == kLeft ? left : -left;
+  if (rig.fixed_handed_swivel_zero)
+    return swivel_of(swivel_zero(axis, up, forward, out_dir, true), pose.position(a.lower) - shoulder);
+  // The usual zero as the transitions have always read it (the way down without solve_chain's
+  // lean near the upward vertical): main's clips to the bit (docs/SYNTHESIS.md swivel-choice).
   glm::vec3 down = reject(-up, axis);
   if (glm::length(down) < 1e-3f) down = reject(-forward, axis);
   down = glm::normalize(down);

@@ -892,6 +892,79 @@ TEST_P(MotionSmoothness, HandsCaughtBetweenTheChinAndTheTorsoLeaveByOneWay) {
   EXPECT_LE(r.report.max_penetration_m, avatar ? 0.01f : 0.005f) << GetParam();
 }
 
+// Wrists that cross the shoulder joint's coronal plane (docs/SYNTHESIS.md elbow-leap,
+// swivel-pref): the HamNoSys corpus's gołąb (fists hanging at the plane below the stomach, the
+// wrist within a centimetre of it and straight under the joint) and szkoła (pjm_276: a flat hand
+// across the body at the far shoulder turning palm up, the wrist passing 1-3 cm behind the
+// plane), whole, from the rest pose and back. The swivel's old zero turned half round at that
+// plane (and under the joint), so the same swivel number put the elbow on the other side: on
+// main the project avatar's right elbow leapt 465 mm (gołąb) and 464 mm (szkoła) in a frame,
+// szkoła 118.8 mm deep. With the zero of fixed handedness and the way down leaned back under the
+// joint: the largest arm step held to 150 mm; gołąb to the 5 mm depth bound, szkoła to 15 mm
+// (measured 12.4 mm on the project avatar: its palm-up goal at the far shoulder is deep on every
+// swivel, elbow-flip).
+TEST_P(MotionSmoothness, AWristCrossingTheShouldersCoronalPlaneKeepsItsElbowOnOneSide) {
+  struct Case {
+    const char* names;
+    float depth_m;
+  };
+  for (const Case& c :
+       {Case{"hamsymmlr,hamfist,hamthumbacrossmod,hamextfingerd,hampalml,hambelowstomach,hamlrbeside,hamclose,"
+             "hammoveil,hamlargemod,hamrepeatfromstart",
+             0.005f},
+        Case{"hamflathand,hamfingerbendmod,hamextfingerl,hampalml,hamlrat,hamshouldertop,hambetween,hamshoulders,"
+             "hamtouch,hamreplace,hampalmu,hamfast,hamrepeatfromstart",
+             0.015f}}) {
+    SCOPED_TRACE(c.names);
+    const std::vector<notation::SignParse> read = notation::parse_hamnosys_text(c.names);
+    ASSERT_EQ(read.size(), 1u);
+    ASSERT_TRUE(read[0].ok() && read[0].spec);
+    const SynthesisResult r = synthesize_sign(*read[0].spec, avatar_, SynthesisOptions{});
+    ASSERT_TRUE(r.ok());
+    const Worst w = measure(rig_, r.clip);
+    RecordProperty("worst_step_mm", std::to_string(w.step_m * 1000.0f) + " " + w.step_what);
+    EXPECT_LE(w.step_m, 0.15f) << GetParam() << ": " << w.step_what;
+    EXPECT_LE(r.report.max_penetration_m, c.depth_m) << GetParam();
+  }
+}
+
+// The same two signs as one phrase (docs/SYNTHESIS.md swivel-choice): each may be solved in the
+// swivel zero of fixed handedness while the phrase's transitions plan in the usual one
+// (transition.cpp pose_swivel reads the posed elbows in the phrase's zero), so the joins between
+// signs of either zero must not leap either: the largest arm step of the whole phrase, both
+// transitions between the signs included, held to the single signs' 150 mm.
+TEST_P(MotionSmoothness, SignsSolvedInEitherSwivelZeroJoinWithoutALeap) {
+  const char* szkola =
+      "hamflathand,hamfingerbendmod,hamextfingerl,hampalml,hamlrat,hamshouldertop,hambetween,hamshoulders,"
+      "hamtouch,hamreplace,hampalmu,hamfast,hamrepeatfromstart";
+  const char* golab =
+      "hamsymmlr,hamfist,hamthumbacrossmod,hamextfingerd,hampalml,hambelowstomach,hamlrbeside,hamclose,"
+      "hammoveil,hamlargemod,hamrepeatfromstart";
+  std::vector<notation::SignParse> read;
+  for (const char* names : {szkola, golab, szkola}) {
+    std::vector<notation::SignParse> one = notation::parse_hamnosys_text(names);
+    ASSERT_EQ(one.size(), 1u) << names;
+    read.push_back(std::move(one[0]));
+  }
+  Synthesizer synth(avatar_);
+  ASSERT_TRUE(synth.ok()) << synth.error();
+  std::vector<PhraseItem> items;
+  for (const notation::SignParse& p : read) {
+    ASSERT_TRUE(p.ok() && p.spec);
+    PhraseItem item;
+    item.sign = *p.spec;
+    items.push_back(item);
+  }
+  SynthesisOptions opt;
+  opt.start_from_rest = true;
+  const SynthesisResult r = synth.phrase(items, opt);
+  ASSERT_TRUE(r.ok());
+  const Worst w = measure(rig_, r.clip);
+  RecordProperty("worst_step_mm", std::to_string(w.step_m * 1000.0f) + " " + w.step_what);
+  EXPECT_LE(w.step_m, 0.15f) << GetParam() << ": " << w.step_what;
+  EXPECT_LE(r.report.max_penetration_m, 0.015f) << GetParam();
+}
+
 INSTANTIATE_TEST_SUITE_P(Rigs, MotionSmoothness, ::testing::Values("avatar", "reference"));
 
 }  // namespace
