@@ -23,6 +23,11 @@ inline Float4 load4(const glm::quat& q) {
   std::memcpy(&r, &q, sizeof r);
   return r;
 }
+inline Float4 load4(const glm::vec4& v) {
+  Float4 r;
+  std::memcpy(&r, &v, sizeof r);
+  return r;
+}
 inline void store4(glm::quat* q, Float4 v) { std::memcpy(q, &v, sizeof v); }
 inline Float4 load3(const glm::vec3& v) { return Float4{v.x, v.y, v.z, 0.0f}; }
 

@@ -180,8 +180,25 @@ bool build_rig(const avatar::Avatar& avatar, Rig* rig, std::string* error) {
     a.palm_width_m = glm::length(idx - lit);
     a.finger_radius_m = std::max(0.004f, 0.15f * a.palm_width_m);
   }
+  r.refresh_bind_cache();
   *rig = std::move(r);
   return true;
+}
+
+void Rig::refresh_bind_cache() {
+  using namespace math::lanes;
+  const size_t n = static_cast<size_t>(joint_count);
+  bind_offset.assign(n, glm::vec4(0.0f));
+  bind_rot_conj.resize(n);
+  for (size_t j = 0; j < n; ++j) {
+    const int p = parent[j];
+    if (p >= 0) {
+      // load3's lanes: x, y, z of the difference, w 0.
+      const glm::vec3 d = bind_pos[j] - bind_pos[static_cast<size_t>(p)];
+      bind_offset[j] = glm::vec4(d, 0.0f);
+    }
+    store4(&bind_rot_conj[j], quat_conjugate(load4(bind_rot[j])));
+  }
 }
 
 PoseBuilder::PoseBuilder(const Rig& r)
@@ -207,7 +224,7 @@ void PoseBuilder::finalize() {
     if (!is_set_[j]) delta_[j] = delta_[p];
     // pos[p] + delta[p] * (bind offset), glm's arithmetic in lanes (set_from_local's).
     using namespace math::lanes;
-    const Float4 moved = load3(pos_[p]) + quat_rotate(load4(delta_[p]), load3(r.bind_pos[j] - r.bind_pos[p]));
+    const Float4 moved = load3(pos_[p]) + quat_rotate(load4(delta_[p]), load4(r.bind_offset[j]));
     pos_[j] = glm::vec3(moved[0], moved[1], moved[2]);
   }
 }
@@ -236,15 +253,13 @@ void PoseBuilder::set_from_local(const glm::quat* local) {
     using namespace math::lanes;
     const Float4 m = p < 0 ? load4(local[j]) : quat_mul(load4(model[p]), load4(local[j]));
     store4(&model[j], m);
-    const Float4 conj_bind = quat_conjugate(load4(r.bind_rot[j]));
-    const Float4 d = quat_normalize(quat_mul(m, conj_bind));
+    const Float4 d = quat_normalize(quat_mul(m, load4(r.bind_rot_conj[j])));
     store4(&delta_[j], d);
     is_set_[j] = 1;
     if (p < 0) {
       pos_[j] = r.bind_pos[j];
     } else {
-      const Float4 offset = load3(r.bind_pos[j] - r.bind_pos[p]);
-      const Float4 moved = load3(pos_[p]) + quat_rotate(load4(delta_[p]), offset);
+      const Float4 moved = load3(pos_[p]) + quat_rotate(load4(delta_[p]), load4(r.bind_offset[j]));
       pos_[j] = glm::vec3(moved[0], moved[1], moved[2]);
     }
   }
@@ -277,7 +292,7 @@ void PoseBuilder::local_rotations(glm::quat* out) const {
     // motion converts every solved frame, and glm's scalar products were a tenth of its time.
     const Float4 bind = load4(r.bind_rot[j]);
     const Float4 rel =
-        quat_mul(quat_mul(quat_mul(quat_conjugate(bind), quat_conjugate(load4(dp))), load4(delta_[j])), bind);
+        quat_mul(quat_mul(quat_mul(load4(r.bind_rot_conj[j]), quat_conjugate(load4(dp))), load4(delta_[j])), bind);
     store4(&out[j], quat_normalize(quat_mul(load4(r.bind_local_rot[j]), rel)));
   }
 }

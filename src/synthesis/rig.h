@@ -60,6 +60,16 @@ struct Rig {
   // synthesize_sign_motion tries where the usual zero's clip leaps (docs/SYNTHESIS.md
   // swivel-choice). Not a property of the body: set on a copy of the context for that solve.
   bool fixed_handed_swivel_zero = false;
+  // Bind-pose terms the pose builders read for every joint they pose (PoseBuilder::
+  // set_from_local and finalize, SubsetPose), worked out once per rig instead of per joint per
+  // call (docs/SYNTHESIS.md speed-exact): bind_offset[j] = bind_pos[j] - bind_pos[parent] with w 0
+  // (the lanes' load3 of that difference; the root's is 0) and bind_rot_conj[j] =
+  // conjugate(bind_rot[j]) in the lanes' arithmetic, so every pose keeps its bits. build_rig
+  // fills them; code that edits parent, bind_pos or bind_rot afterwards (tests nudging a
+  // fingertip) must call refresh_bind_cache(), or poses read the old geometry.
+  std::vector<glm::vec4> bind_offset;
+  std::vector<glm::quat> bind_rot_conj;
+  void refresh_bind_cache();
 
   // Tip position in the bind pose (the tip joint, or the distal bone extended).
   glm::vec3 bind_tip(Side side, int finger) const;

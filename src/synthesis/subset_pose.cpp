@@ -36,13 +36,12 @@ void SubsetPose::set_from_local(const glm::quat* local) {
     last_local_[static_cast<size_t>(j)] = local[j];
     const Float4 m = p < 0 ? load4(local[j]) : quat_mul(load4(model_[static_cast<size_t>(p)]), load4(local[j]));
     store4(&model_[static_cast<size_t>(j)], m);
-    const Float4 conj_bind = quat_conjugate(load4(r.bind_rot[static_cast<size_t>(j)]));
-    store4(&delta_[static_cast<size_t>(j)], quat_normalize(quat_mul(m, conj_bind)));
+    store4(&delta_[static_cast<size_t>(j)], quat_normalize(quat_mul(m, load4(r.bind_rot_conj[static_cast<size_t>(j)]))));
     if (p < 0) {
       pos_[static_cast<size_t>(j)] = r.bind_pos[static_cast<size_t>(j)];
     } else {
-      const Float4 offset = load3(r.bind_pos[static_cast<size_t>(j)] - r.bind_pos[static_cast<size_t>(p)]);
-      const Float4 moved = load3(pos_[static_cast<size_t>(p)]) + quat_rotate(load4(delta_[static_cast<size_t>(p)]), offset);
+      const Float4 moved = load3(pos_[static_cast<size_t>(p)]) +
+                           quat_rotate(load4(delta_[static_cast<size_t>(p)]), load4(r.bind_offset[static_cast<size_t>(j)]));
       pos_[static_cast<size_t>(j)] = glm::vec3(moved[0], moved[1], moved[2]);
     }
   }

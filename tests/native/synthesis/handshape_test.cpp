@@ -139,6 +139,7 @@ TEST_P(HandshapeTest, ThumbContactPoseIsContinuousInItsInputs) {
         const FingerChain& finger = moved.arms[kRight].fingers[i + 1];
         if (thumb.tip >= 0) moved.bind_pos[thumb.tip] += nudge;
         if (finger.tip >= 0) moved.bind_pos[finger.tip] -= nudge;
+        moved.refresh_bind_cache();  // the builders' bind offsets (rig.h)
         float d = max_angle_difference(base, solve_handshape(moved, kRight, s));
         if (d > worst) {
           worst = d;
@@ -173,6 +174,7 @@ TEST_P(HandshapeTest, RememberedHandSolvesFollowTheRigTheyAreAskedFor) {
   const glm::vec3 shift = 0.015f * a.palm_normal;
   bent.bind_pos[static_cast<size_t>(index.bones[2])] += shift;
   if (index.tip >= 0) bent.bind_pos[static_cast<size_t>(index.tip)] += shift;
+  bent.refresh_bind_cache();  // the builders' bind offsets (rig.h); stale, d1 . d2 fails below
   EXPECT_GT(max_angle_difference(first, solve_handshape(bent, kRight, pinch)), 1e-3f);
   PoseBuilder pb(bent);
   pose_fingers(bent, kRight, solve_handshape(bent, kRight, flat()), glm::quat(1, 0, 0, 0), &pb);
