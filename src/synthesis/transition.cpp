@@ -747,9 +747,10 @@ struct HandPathTry {
   // With apart_m: how far ahead of the way the hand turns to its orientation at the sign
   // (hand_path_waypoint: the share of the way to the sign's times this, at most all of it).
   float turn_ahead;
-  // With apart_m: the approach's last stretch a straight approach of each hand along the line
-  // between the hands (hands_apart_dirs), its orientation and elbow already the sign's: waypoints
-  // with the wrist this far off its place at the sign (kApproachFractions), none when empty.
+  // With apart_m: the way's last stretch a straight approach of each hand to its place at the
+  // sign, along the line the hands stay clear along (approach_dirs, which also holds them apart
+  // on the way), the sign's orientation, elbow and handshape already held: two more waypoints,
+  // the wrist kApproachOffsets_m off its place at the sign (plan_hand_path_bowed).
   bool approach = false;
 };
 constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0.0f},
@@ -769,6 +770,11 @@ constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0
                                           {0.20f, true, 0.12f, 1.0f},
                                           {kHandPathForwardBow_m, true, 0.05f, 1.5f},
                                           {0.12f, true, 0.08f, 1.5f},
+                                          // The same with an approach, after them, so a sign one
+                                          // of those clears keeps its clip (the lexicon's all do).
+                                          // Measured on the whole corpus (rest-meet, over 5 mm):
+                                          // 136 -> 124; put in their place, 132, but 23 signs
+                                          // deeper by more than 2 mm (pistolet 0 -> 18.7 mm).
                                           {kHandPathForwardBow_m, true, 0.05f, 1.0f, true},
                                           {0.12f, true, 0.08f, 1.0f, true},
                                           {kHandPathForwardBow_m, true, 0.12f, 1.0f, true},
@@ -1012,6 +1018,8 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const Waypoin
                                           const ThoraxFrame& frame_from, const ThoraxFrame& frame_to, float apart_m,
                                           const std::array<glm::vec3, 2>& apart_dir, float turn_ahead,
                                           bool sign_at_end, float approach_m = 0.0f) {
+  // approach_m > 0: a waypoint of an approach (HandPathTry::approach), the wrist that far off its
+  // place at the sign along apart_dir, the hand turned and the elbow swivelled as at the sign.
   const Rig& rig = ctx.rig;
   const PoseBuilder& pa = base.pa;
   const ThoraxFrame& frame_at = base.frame_at;
@@ -1081,11 +1089,15 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const Waypoin
 // lexicon's median no lower with more; each costs an arm solve.
 constexpr int kHandPathWaypoints = 3;
 // The approach's waypoints (HandPathTry::approach): at these fractions of the way from the sign's
-// end, the wrist this far off its place at the sign.
+// end, the wrist this far off its place at the sign. Between them and the key pose the arm's
+// joints change so little that their slerp is about the straight approach; from the last
+// hands-apart waypoint (a quarter of the way out, 5-12 cm apart) it was not, and the hands closed
+// into each other there (docs/SYNTHESIS.md, rest-meet). Not tuned.
 constexpr std::array<float, 2> kApproachFractions = {0.03f, 0.10f};
 constexpr std::array<float, 2> kApproachOffsets_m = {0.01f, 0.03f};
 // With an approach, every joint but the arms' (the fingers' shape) reaches the sign's this share
-// of the way from the sign's end (plan_hand_path_bowed).
+// of the way from the sign's end (plan_hand_path_bowed): a signer forms the hand before the hands
+// meet. Without it the corpus had as many signs over 5 mm, but SKY-OR-HEAVEN2A 4.6 mm (0.3 with).
 constexpr float kApproachLead = 0.25f;
 
 // The fastest a finger or fingertip moves on a rest transition's hand path (its peak, not its
