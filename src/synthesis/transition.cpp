@@ -748,9 +748,10 @@ struct HandPathTry {
   // (hand_path_waypoint: the share of the way to the sign's times this, at most all of it).
   float turn_ahead;
   // With apart_m: the way's last stretch a straight approach of each hand to its place at the
-  // sign, along the line the hands stay clear along (approach_dirs, which also holds them apart
-  // on the way), the sign's orientation, elbow and handshape already held: two more waypoints,
-  // the wrist kApproachOffsets_m off its place at the sign (plan_hand_path_bowed).
+  // sign, along the line the hands stay clear along (approach_dirs; held apart before it along
+  // the line between the palm centres, as the hands-apart tries are), the sign's orientation,
+  // elbow and handshape already held: two more waypoints, the wrist kApproachOffsets_m off its
+  // place at the sign (plan_hand_path_bowed).
   bool approach = false;
 };
 constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0.0f},
@@ -773,7 +774,7 @@ constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0
                                           // The same with an approach, after them, so a sign one
                                           // of those clears keeps its clip (the lexicon's all do).
                                           // Measured on the whole corpus (rest-meet, over 5 mm):
-                                          // 136 -> 124; put in their place, 132, but 23 signs
+                                          // 136 -> 121; put in their place, 132, but 23 signs
                                           // deeper by more than 2 mm (pistolet 0 -> 18.7 mm).
                                           {kHandPathForwardBow_m, true, 0.05f, 1.0f, true},
                                           {0.12f, true, 0.08f, 1.0f, true},
@@ -817,7 +818,7 @@ struct HandPathTrials {
   std::array<Try, kHandPathTryCount> tries;
   bool has_ends = false;
   KindDepths ends_from, ends_to;
-  // The approach's line (approach_dirs), found at the first try with an approach.
+  // The approach's line (approach_dirs), found at the first try with an approach (zero before).
   bool has_approach = false;
   std::array<glm::vec3, 2> approach_dir{};
   void measure_ends(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, std::uint8_t exempt_from,
@@ -950,7 +951,9 @@ std::array<glm::vec3, 2> hands_apart_dirs(const Rig& rig, const PoseBuilder& sig
 // candidate line along which they stay clearest (hands_swept_gap, over kApproachSweep_m of the
 // hands' relative travel): hands whose parts pass each other at the sign (the corpus's symmetric
 // C hands, TO-TOUCH1A: the open thumbs crossed under the palms) go through each other when they
-// close along the centre line, whatever the path before.
+// close along the centre line, whatever the path before. Only the last stretch takes it: the hands
+// held apart along it on the way as well (by 5-12 cm, that line often forward and back) put a hand
+// into the body, whole corpus over 5 mm 124 against 121 (choinka 3.0 -> 7.9 mm).
 constexpr float kApproachSweep_m = 0.24f;
 std::array<glm::vec3, 2> approach_dirs(const SynthContext& ctx, const PoseBuilder& sign_pose) {
   const Rig& rig = ctx.rig;
@@ -1017,9 +1020,10 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const Waypoin
                                           bool has_previous, float bow_m, bool search_swivel,
                                           const ThoraxFrame& frame_from, const ThoraxFrame& frame_to, float apart_m,
                                           const std::array<glm::vec3, 2>& apart_dir, float turn_ahead,
-                                          bool sign_at_end, float approach_m = 0.0f) {
+                                          bool sign_at_end, float approach_m,
+                                          const std::array<glm::vec3, 2>& approach_dir) {
   // approach_m > 0: a waypoint of an approach (HandPathTry::approach), the wrist that far off its
-  // place at the sign along apart_dir, the hand turned and the elbow swivelled as at the sign.
+  // place at the sign along approach_dir, the hand turned and the elbow swivelled as at the sign.
   const Rig& rig = ctx.rig;
   const PoseBuilder& pa = base.pa;
   const ThoraxFrame& frame_at = base.frame_at;
@@ -1035,7 +1039,7 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const Waypoin
     const float arm_bow_m = glm::length(wrist_to - wrist_from) > kHandPathWideBowFrom_m ? bow_m : kHandPathForwardBow_m;
     const PoseBuilder& sign_pose = sign_at_end ? pt : pf;
     t.point = frame_at.to_flat(approach_m > 0.0f
-                                   ? sign_pose.position(a.hand) + approach_m * apart_dir[side_index]
+                                   ? sign_pose.position(a.hand) + approach_m * approach_dir[side_index]
                                    : wrist_from + s * (wrist_to - wrist_from) +
                                          arm_bow_m * std::sin(3.14159265f * s) * rig.forward +
                                          apart_m * hands_apart_share(s) * apart_dir[side_index]);
@@ -1437,9 +1441,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     const ThoraxFrame frame_from = thorax_frame(ctx, pf, from, to, from);
     const ThoraxFrame frame_to = thorax_frame(ctx, pt, from, to, to);
     const std::array<glm::vec3, 2> apart_dir =
-        attempt.apart_m <= 0.0f ? std::array<glm::vec3, 2>{}
-        : approach              ? trials->approach_dir
-                                : hands_apart_dirs(rig, rest_at_start ? pt : pf);
+        attempt.apart_m > 0.0f ? hands_apart_dirs(rig, rest_at_start ? pt : pf) : std::array<glm::vec3, 2>{};
     for (int i = 0; i < waypoint_count; ++i) {
       const int w = rest_at_start ? waypoint_count - 1 - i : i;
       WaypointBase* base = nullptr;
@@ -1451,7 +1453,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
       }
       record.waypoints[w] = hand_path_waypoint(ctx, *base, pf, pt, fractions[w], &solved_arms, i > 0, attempt.bow_m,
                                                attempt.search_swivel, frame_from, frame_to, attempt.apart_m, apart_dir,
-                                               attempt.turn_ahead, rest_at_start, approach_m[w]);
+                                               attempt.turn_ahead, rest_at_start, approach_m[w], trials->approach_dir);
     }
   }
   const std::vector<std::vector<glm::quat>>& waypoints = record.waypoints;
