@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "synthesis/handshape.h"
 
@@ -286,6 +287,31 @@ Penetration hand_penetration(const BodyModel& body, const PoseBuilder& pose, Sid
   return worst;
 }
 
+float hands_swept_gap(const BodyModel& body, const PoseBuilder& pose, const glm::vec3& dir, float travel_m) {
+  Sphere l[24], r[24];
+  const int n = hand_spheres(body, pose, kLeft, l), m = hand_spheres(body, pose, kRight, r);
+  const glm::vec3 origin(0.0f), sweep = travel_m * dir;
+  float gap = std::numeric_limits<float>::infinity();
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      // The left sphere's centre relative to the right one's, along the sweep.
+      const glm::vec3 at = l[i].c - r[j].c;
+      gap = std::min(gap, glm::length(closest_on_segment(origin, at, at + sweep)) - l[i].r - r[j].r);
+    }
+  // Each hand against the other forearm, which comes along with its own hand. (Not the trunk:
+  // a hand on the body at the sign has it exempt, and the waypoints are checked against it.)
+  for (int side = 0; side < 2; ++side) {
+    const Sphere* mine = side == kLeft ? l : r;
+    const int count = side == kLeft ? n : m;
+    const glm::vec3 away = side == kLeft ? sweep : -sweep;
+    const Capsule& fc = body.forearm[other(static_cast<Side>(side))];
+    const glm::vec3 fa = pose.attached(fc.joint, fc.a), fb = pose.attached(fc.joint, fc.b);
+    for (int i = 0; i < count; ++i)
+      gap = std::min(gap, segment_segment_distance(mine[i].c, mine[i].c + away, fa, fb) - mine[i].r - fc.radius_m);
+  }
+  return gap;
+}
+
 ArmSegments posed_arm(const PoseBuilder& pose, Side side) {
   const ArmRig& a = pose.rig->arms[side];
   return ArmSegments{pose.position(a.upper), pose.position(a.lower), pose.position(a.hand)};
@@ -469,3 +495,4 @@ TrunkCrossing trunk_crossing(const BodyModel& body, const PoseBuilder& pose, con
 }
 
 }  // namespace sw::synthesis
+

@@ -72,6 +72,12 @@ Penetration hand_penetration(const BodyModel& body, const PoseBuilder& pose, Sid
 Penetration arm_penetration(const BodyModel& body, const PoseBuilder& pose, Side side,
                             bool check_trunk, bool hand_contact, bool check_other_forearm);
 
+// How far the two hands of `pose` keep apart (the least gap between a sphere of one and one of the
+// other; negative: overlap) while the left hand moves straight away from the right by up to
+// `travel_m` along `dir` (the hands' relative motion of a straight approach along -dir that ends
+// at `pose`, each hand turned as in `pose`).
+float hands_swept_gap(const BodyModel& body, const PoseBuilder& pose, const glm::vec3& dir, float travel_m);
+
 // The same arm-trunk depth for an arm given by its joint positions against the trunk in its
 // bind pose (the arm IK's key poses leave the trunk unposed): cheap enough to score every swivel
 // candidate.

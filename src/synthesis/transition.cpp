@@ -747,6 +747,12 @@ struct HandPathTry {
   // With apart_m: how far ahead of the way the hand turns to its orientation at the sign
   // (hand_path_waypoint: the share of the way to the sign's times this, at most all of it).
   float turn_ahead;
+  // With apart_m: the way's last stretch a straight approach of each hand to its place at the
+  // sign, along the line the hands stay clear along (approach_dirs; held apart before it along
+  // the line between the palm centres, as the hands-apart tries are), the sign's orientation,
+  // elbow and handshape already held: two more waypoints, the wrist kApproachOffsets_m off its
+  // place at the sign (plan_hand_path_bowed).
+  bool approach = false;
 };
 constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0.0f},
                                           {kHandPathForwardBow_m, true, 0.0f, 0.0f},
@@ -764,7 +770,18 @@ constexpr HandPathTry kHandPathTries[] = {{kHandPathForwardBow_m, false, 0.0f, 0
                                           {kHandPathForwardBow_m, true, 0.12f, 1.0f},
                                           {0.20f, true, 0.12f, 1.0f},
                                           {kHandPathForwardBow_m, true, 0.05f, 1.5f},
-                                          {0.12f, true, 0.08f, 1.5f}};
+                                          {0.12f, true, 0.08f, 1.5f},
+                                          // The same with an approach, after them, so a sign one
+                                          // of those clears keeps its clip (the lexicon's all do).
+                                          // Measured on the whole corpus (rest-meet, over 5 mm):
+                                          // 136 -> 121; put in their place, 132, but 23 signs
+                                          // deeper by more than 2 mm (pistolet 0 -> 18.7 mm).
+                                          {kHandPathForwardBow_m, true, 0.05f, 1.0f, true},
+                                          {0.12f, true, 0.08f, 1.0f, true},
+                                          {kHandPathForwardBow_m, true, 0.12f, 1.0f, true},
+                                          {0.20f, true, 0.12f, 1.0f, true},
+                                          {kHandPathForwardBow_m, true, 0.05f, 1.5f, true},
+                                          {0.12f, true, 0.08f, 1.5f, true}};
 // The tries above without the hands-apart ones: a rest transition whose sign's hands do not touch
 // each other has no use for them.
 constexpr int kHandPathPlainTries = 5;
@@ -790,7 +807,8 @@ struct HandPathTrials {
   // with the trunk's frame there (WaypointBase); the arm solves at the waypoints are the tries'
   // own. Made at the first try that needs them.
   std::unique_ptr<PoseBuilder> from_posed, to_posed;
-  std::vector<std::unique_ptr<WaypointBase>> waypoint_bases;
+  // By fraction of the way (the tries with an approach have more waypoints than the others).
+  std::vector<std::pair<float, std::unique_ptr<WaypointBase>>> waypoint_bases;
   struct Try {
     std::vector<std::vector<glm::quat>> waypoints;  // empty until solved
     bool deeper = false;
@@ -800,6 +818,9 @@ struct HandPathTrials {
   std::array<Try, kHandPathTryCount> tries;
   bool has_ends = false;
   KindDepths ends_from, ends_to;
+  // The approach's line (approach_dirs), found at the first try with an approach (zero before).
+  bool has_approach = false;
+  std::array<glm::vec3, 2> approach_dir{};
   void measure_ends(const SynthContext& ctx, const glm::quat* from, const glm::quat* to, std::uint8_t exempt_from,
                     std::uint8_t exempt_to) {
     if (has_ends) return;
@@ -924,6 +945,39 @@ std::array<glm::vec3, 2> hands_apart_dirs(const Rig& rig, const PoseBuilder& sig
   return dir;
 }
 
+// The line a straight approach of the two hands to the sign takes (HandPathTry::approach): per
+// side, the direction this hand comes from. The line between the palm centres (hands_apart_dirs)
+// where the hands stay as clear of each other along it as they are at the sign; otherwise the
+// candidate line along which they stay clearest (hands_swept_gap, over kApproachSweep_m of the
+// hands' relative travel): hands whose parts pass each other at the sign (the corpus's symmetric
+// C hands, TO-TOUCH1A: the open thumbs crossed under the palms) go through each other when they
+// close along the centre line, whatever the path before. Only the last stretch takes it: the hands
+// held apart along it on the way as well (by 5-12 cm, that line often forward and back) put a hand
+// into the body, whole corpus over 5 mm 124 against 121 (choinka 3.0 -> 7.9 mm).
+constexpr float kApproachSweep_m = 0.24f;
+std::array<glm::vec3, 2> approach_dirs(const SynthContext& ctx, const PoseBuilder& sign_pose) {
+  const Rig& rig = ctx.rig;
+  const std::array<glm::vec3, 2> centre_line = hands_apart_dirs(rig, sign_pose);
+  const glm::vec3 c = centre_line[kLeft];
+  const float at_sign = hands_swept_gap(ctx.body, sign_pose, c, 0.0f);
+  const float floor_m = std::min(at_sign, 0.0f) - 0.001f;
+  float best_gap = hands_swept_gap(ctx.body, sign_pose, c, kApproachSweep_m);
+  if (best_gap >= floor_m) return centre_line;
+  glm::vec3 best = c;
+  const glm::vec3 axes[] = {rig.up, -rig.up, rig.forward, -rig.forward, rig.left, -rig.left};
+  for (const glm::vec3& axis : axes)
+    for (float w : {0.5f, 1.0f, 2.0f, -1.0f}) {
+      if (std::fabs(glm::dot(axis, c)) > 0.9f && w > 0.0f) continue;  // about the centre line
+      const glm::vec3 dir = w < 0.0f ? axis : safe_normalize(c + w * axis, c);
+      const float gap = hands_swept_gap(ctx.body, sign_pose, dir, kApproachSweep_m);
+      if (gap > best_gap + 1e-4f) {
+        best_gap = gap;
+        best = dir;
+      }
+    }
+  return {best, -best};
+}
+
 // How much of apart_m a wrist is held off at fraction s of the hand's path: none at either end,
 // all of it from s = 0.23 to 0.77 (1.5 sin(pi s) capped at 1), so at every waypoint (0.25, 0.5,
 // 0.75), and the hands close only in the last quarter.
@@ -966,7 +1020,10 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const Waypoin
                                           bool has_previous, float bow_m, bool search_swivel,
                                           const ThoraxFrame& frame_from, const ThoraxFrame& frame_to, float apart_m,
                                           const std::array<glm::vec3, 2>& apart_dir, float turn_ahead,
-                                          bool sign_at_end) {
+                                          bool sign_at_end, float approach_m,
+                                          const std::array<glm::vec3, 2>& approach_dir) {
+  // approach_m > 0: a waypoint of an approach (HandPathTry::approach), the wrist that far off its
+  // place at the sign along approach_dir, the hand turned and the elbow swivelled as at the sign.
   const Rig& rig = ctx.rig;
   const PoseBuilder& pa = base.pa;
   const ThoraxFrame& frame_at = base.frame_at;
@@ -980,12 +1037,17 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const Waypoin
     if (glm::length(wrist_to - wrist_from) < 0.01f) continue;
     ArmTarget t;
     const float arm_bow_m = glm::length(wrist_to - wrist_from) > kHandPathWideBowFrom_m ? bow_m : kHandPathForwardBow_m;
-    t.point = frame_at.to_flat(wrist_from + s * (wrist_to - wrist_from) +
-                               arm_bow_m * std::sin(3.14159265f * s) * rig.forward +
-                               apart_m * hands_apart_share(s) * apart_dir[side_index]);
+    const PoseBuilder& sign_pose = sign_at_end ? pt : pf;
+    t.point = frame_at.to_flat(approach_m > 0.0f
+                                   ? sign_pose.position(a.hand) + approach_m * approach_dir[side_index]
+                                   : wrist_from + s * (wrist_to - wrist_from) +
+                                         arm_bow_m * std::sin(3.14159265f * s) * rig.forward +
+                                         apart_m * hands_apart_share(s) * apart_dir[side_index]);
     t.contact_offset = glm::vec3(0.0f);
     t.hand_delta = glm::conjugate(frame_at.rotation) * pa.delta(a.hand);
-    if (apart_m > 0.0f) {
+    if (approach_m > 0.0f) {
+      t.hand_delta = glm::conjugate(frame_at.rotation) * sign_pose.delta(a.hand);
+    } else if (apart_m > 0.0f) {
       // Hands kept apart close in along the line between them; turned towards their orientation
       // at the sign ahead of the way (turn_ahead), so the last quarter mostly closes the gap:
       // turning while closing, the hand-written C pair of SynthesisTransition.HandsThatTouch...
@@ -1000,6 +1062,7 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const Waypoin
     if (turn > 3.14159265f) turn -= 6.28318531f;
     if (turn < -3.14159265f) turn += 6.28318531f;
     t.swivel_rad = swivel_from + s * turn;
+    if (approach_m > 0.0f) t.swivel_rad = sign_at_end ? swivel_from + turn : swivel_from;
     if (search_swivel) {
       // A retry's arm: the swivel searched round the interpolated one, with the body model,
       // so the elbow keeps out of the trunk where the interpolated swivel does not.
@@ -1029,6 +1092,17 @@ std::vector<glm::quat> hand_path_waypoint(const SynthContext& ctx, const Waypoin
 // raise on the project avatar takes 29 states with 2, 28 with 3, 4 or 5 (46 direct), the
 // lexicon's median no lower with more; each costs an arm solve.
 constexpr int kHandPathWaypoints = 3;
+// The approach's waypoints (HandPathTry::approach): at these fractions of the way from the sign's
+// end, the wrist this far off its place at the sign. Between them and the key pose the arm's
+// joints change so little that their slerp is about the straight approach; from the last
+// hands-apart waypoint (a quarter of the way out, 5-12 cm apart) it was not, and the hands closed
+// into each other there (docs/SYNTHESIS.md, rest-meet). Not tuned.
+constexpr std::array<float, 2> kApproachFractions = {0.03f, 0.10f};
+constexpr std::array<float, 2> kApproachOffsets_m = {0.01f, 0.03f};
+// With an approach, every joint but the arms' (the fingers' shape) reaches the sign's this share
+// of the way from the sign's end (plan_hand_path_bowed): a signer forms the hand before the hands
+// meet. Without it the corpus had as many signs over 5 mm, but SKY-OR-HEAVEN2A 4.6 mm (0.3 with).
+constexpr float kApproachLead = 0.25f;
 
 // The fastest a finger or fingertip moves on a rest transition's hand path (its peak, not its
 // mean; the arm keeps eq. (10)'s minimum-jerk profile). Peak hand speeds in fluent signing are
@@ -1324,8 +1398,31 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   const HandPathTry& attempt = kHandPathTries[try_index];
   HandPathTrials::Try& record = trials->tries[static_cast<size_t>(try_index)];
-  std::vector<float> fractions(kHandPathWaypoints);
+  std::vector<float> fractions(kHandPathWaypoints), approach_m(kHandPathWaypoints, 0.0f);
   for (int w = 0; w < kHandPathWaypoints; ++w) fractions[w] = static_cast<float>(w + 1) / (kHandPathWaypoints + 1);
+  const bool approach = attempt.approach;
+  if (approach) {
+    // The approach's waypoints beside the sign's end, in the path's order.
+    for (size_t n = 0; n < kApproachFractions.size(); ++n) {
+      const size_t i = rest_at_start ? kApproachFractions.size() - 1 - n : n;
+      const float f = rest_at_start ? 1.0f - kApproachFractions[i] : kApproachFractions[i];
+      if (rest_at_start) {
+        fractions.push_back(f);
+        approach_m.push_back(kApproachOffsets_m[i]);
+      } else {
+        fractions.insert(fractions.begin() + static_cast<long>(n), f);
+        approach_m.insert(approach_m.begin() + static_cast<long>(n), kApproachOffsets_m[i]);
+      }
+    }
+  }
+  const int waypoint_count = static_cast<int>(fractions.size());
+  // The fingers' (and every joint's but the arms') share of the way at each waypoint: with an
+  // approach, the hand has its sign's shape before the last stretch (a signer forms the hand
+  // before the hands meet, and parts them before it relaxes).
+  std::vector<float> finger_s = fractions;
+  if (approach)
+    for (float& f : finger_s)
+      f = rest_at_start ? std::min(1.0f, f / (1.0f - kApproachLead)) : std::max(0.0f, (f - kApproachLead) / (1.0f - kApproachLead));
   if (!trials->from_posed) {
     trials->from_posed = std::make_unique<PoseBuilder>(rig);
     trials->to_posed = std::make_unique<PoseBuilder>(rig);
@@ -1334,21 +1431,29 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
   }
   const PoseBuilder& pf = *trials->from_posed;
   const PoseBuilder& pt = *trials->to_posed;
+  if (approach && !trials->has_approach) {
+    trials->approach_dir = approach_dirs(ctx, rest_at_start ? pt : pf);
+    trials->has_approach = true;
+  }
   if (record.waypoints.empty()) {
-    record.waypoints.resize(kHandPathWaypoints);
+    record.waypoints.resize(static_cast<size_t>(waypoint_count));
     std::array<ArmPose, 2> solved_arms;
     const ThoraxFrame frame_from = thorax_frame(ctx, pf, from, to, from);
     const ThoraxFrame frame_to = thorax_frame(ctx, pt, from, to, to);
     const std::array<glm::vec3, 2> apart_dir =
         attempt.apart_m > 0.0f ? hands_apart_dirs(rig, rest_at_start ? pt : pf) : std::array<glm::vec3, 2>{};
-    if (trials->waypoint_bases.empty()) trials->waypoint_bases.resize(kHandPathWaypoints);
-    for (int i = 0; i < kHandPathWaypoints; ++i) {
-      const int w = rest_at_start ? kHandPathWaypoints - 1 - i : i;
-      std::unique_ptr<WaypointBase>& base = trials->waypoint_bases[static_cast<size_t>(w)];
-      if (!base) base = std::make_unique<WaypointBase>(ctx, from, to, fractions[w]);
+    for (int i = 0; i < waypoint_count; ++i) {
+      const int w = rest_at_start ? waypoint_count - 1 - i : i;
+      WaypointBase* base = nullptr;
+      for (auto& b : trials->waypoint_bases)
+        if (b.first == finger_s[w]) base = b.second.get();
+      if (!base) {
+        trials->waypoint_bases.emplace_back(finger_s[w], std::make_unique<WaypointBase>(ctx, from, to, finger_s[w]));
+        base = trials->waypoint_bases.back().second.get();
+      }
       record.waypoints[w] = hand_path_waypoint(ctx, *base, pf, pt, fractions[w], &solved_arms, i > 0, attempt.bow_m,
                                                attempt.search_swivel, frame_from, frame_to, attempt.apart_m, apart_dir,
-                                               attempt.turn_ahead, rest_at_start);
+                                               attempt.turn_ahead, rest_at_start, approach_m[w], trials->approach_dir);
     }
   }
   const std::vector<std::vector<glm::quat>>& waypoints = record.waypoints;
@@ -1397,7 +1502,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
       }
     }
   }
-  const HandChain chain(rig, from, to, pf, pt, waypoints, fractions);
+  const HandChain chain(rig, from, to, pf, pt, waypoints, finger_s);
   auto sample = [&](int k, std::vector<glm::quat>* frames) { chain.sample(k, frames); };
   // Eq. (10)'s L_max on the hand's path is the arm's: the longest path of the shoulder girdle,
   // upper arm, forearm and wrist joints (the hand joint is the wrist). coef's 1 m/s is a mean
@@ -1533,7 +1638,7 @@ bool plan_hand_path_bowed(const SynthContext& ctx, const glm::quat* from, const 
     measure(&step_m, &d, std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
     stretch = std::sqrt(accel_mps2 / kArmPeakAccelMPerS2);
   }
-  p.via_points = kHandPathWaypoints;
+  p.via_points = waypoint_count;
   if (is_deeper(d)) {
     record.deeper = true;
     record.k = p.k;

@@ -192,8 +192,10 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
 TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   const CorpusSample& s = corpus_sample();
   if (!s.skip.empty()) GTEST_SKIP() << s.skip;
-  // The sample's measured figures, every 2nd clean sign: 2,237 synthesised, 68 over 5 mm
-  // (3.0 %), deepest 77 mm (ratować), after push-rest (a hand caught between the chin and the
+  // The sample's measured figures, every 2nd clean sign: 2,237 synthesised, 62 over 5 mm
+  // (2.8 %), deepest 77 mm (ratować), after rest-meet (the hands of a rest transition come
+  // together along a line they stay clear along; hand in other hand 23 -> 18 signs); 67 (3.0 %)
+  // on main before it; 68 (3.0 %) after push-rest (a hand caught between the chin and the
   // torso leaves by one way, judged with the sign's transitions); 94 over 5 mm (4.2 %) after ramp-side (one swivel side per run of fixes); 95
   // (4.2 %) after centre-push (hands side by side parted along the line
   // between their centres); 114 (5.1 %) before it. szkoła (119 mm, the whole corpus's deepest)
@@ -210,7 +212,7 @@ TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   // that adds least); 208 (9.4 %) of 2,217 before the HamNoSys reader read the bracketed contact
   // part after a place as that (hamnosys_parser.cpp, read_contact_bracket); 21 % of all signs
   // before corpus-depth.
-  constexpr float kMeasuredShareOver5mm = 0.030f;
+  constexpr float kMeasuredShareOver5mm = 0.028f;
   constexpr float kMeasuredDeepest_m = 0.077f;
 
   int synthesised = 0, over = 0;

@@ -369,5 +369,34 @@ TEST(SynthesisTransition, HandsThatTouchAtTheSignMeetOnlyAtTheEndOfTheRestTransi
   ASSERT_TRUE(r.ok());
   EXPECT_LE(r.report.max_penetration_m, 0.005f);
 }
+
+// rest-meet: hands whose parts pass each other at the sign closed into each other in the rest
+// transition's last states however they were held apart on the way: the hands-apart tries' last
+// waypoint (three quarters of the way) still had the hands turning and the fingers forming, and
+// the joint-space path from there to the key pose is no straight approach; and along the line
+// between the palm centres no straight approach is clear at all where the hands' parts cross at
+// the sign. The approach tries (transition.cpp approach_dirs, kApproachFractions) bring each hand
+// in along a line the hands stay clear along, with the sign's orientation, elbow and handshape
+// held, through waypoints 3 cm and 1 cm off. Hand-written minimal HamNoSys of the corpus's form
+// (TO-TOUCH1A, SOFT1B, MONTH-CALENDAR2: 8.6 mm in the rest transition in): symmetric C hands,
+// thumbs open, fingers straight, fingers up, palms down-left; the open thumbs cross under the
+// palms. Before (the thumbs through each other in the approach's last frames): 9.1 mm on the
+// reference humanoid, 7.4 mm on the project avatar; now 2.9 and 0.1 mm.
+TEST(SynthesisTransition, HandsWhosePartsCrossAtTheSignCloseAlongALineTheyStayClearAlong) {
+  // hamsymmlr hamceeall hamthumbopenmod hamfingerstraightmod hamextfingeru hampalmdl
+  const std::string hns = "\xee\x83\xa9\xee\x80\x8a\xee\x80\x8e\xee\x80\x90\xee\x80\xa0\xee\x80\xbd";
+  const std::vector<notation::SignParse> parsed = notation::parse_signs(hns, notation::NotationFormat::HamNoSys);
+  ASSERT_FALSE(parsed.empty());
+  ASSERT_TRUE(parsed[0].ok() && parsed[0].spec);
+  const SynthesisResult reference = synthesize_sign(*parsed[0].spec, make_reference_humanoid(), SynthesisOptions{});
+  ASSERT_TRUE(reference.ok());
+  EXPECT_LE(reference.report.max_penetration_m, 0.005f) << "reference humanoid";
+  ProjectAvatar project = load_project_avatar();
+  if (!project.present) GTEST_SKIP() << "models/signweave-avatar.glb not found";
+  ASSERT_TRUE(project.error.empty()) << project.error;
+  const SynthesisResult r = synthesize_sign(*parsed[0].spec, project.avatar, SynthesisOptions{});
+  ASSERT_TRUE(r.ok());
+  EXPECT_LE(r.report.max_penetration_m, 0.005f) << "project avatar";
+}
 }  // namespace
 }  // namespace sw::synthesis
