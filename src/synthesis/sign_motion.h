@@ -29,6 +29,10 @@ struct SynthContext {
   std::vector<glm::quat> rest_locals;  // the rest pose (arms down, hands relaxed)
   // Optional, per synthesis call: max_penetration's per-frame results (transition.h).
   PenetrationMemo* penetration_memo = nullptr;
+  // A mirror pair written at one place is laid apart to both sides (sign_motion.cpp
+  // lay_mirror_pair_apart); off, the dominant hand alone moves out of the way (the other solve
+  // synthesize_sign_motion compares it with).
+  bool mirror_pairs_apart = true;
 };
 bool make_context(const avatar::Avatar& avatar, const SynthesisOptions& options, SynthContext* ctx,
                   std::string* error);
@@ -52,15 +56,33 @@ struct SignMotion {
   std::vector<float> orientation_error_rad;
   std::vector<std::string> warnings;
   int pushes = 0;                     // frames pushed out of the body
+  bool mirror_laid_apart = false;     // the key pose's mirror pair was laid apart to both sides
 };
 
 // Synthesises one sign's frames (no transitions in or out). `where` prefixes error locations.
 // `usual_alternative` (optional): where a hand caught between two capsules was sent out by the
 // jam rule (sign_motion.cpp) and that clip kept, the clip solved without the rule, for the caller
 // to judge the two with the transitions next to the sign; otherwise left empty (frame_count 0).
+// `escape` (optional): where the key pose's mirror pair was laid apart to both sides
+// (SignMotion::mirror_laid_apart), the sign solved with the dominant hand alone moved out of the
+// way instead (`clip`, and its own `usual` alternative as above), for the caller to judge with the
+// transitions; otherwise left empty. Without `escape` the two are judged on the sign's frames.
+struct EscapeAlternative {
+  SignMotion clip, usual;
+};
+// Whether the laid-apart clip (its deepest frame and largest wrist or elbow step in one frame) is
+// kept over the escape's: no deeper (0.1 mm, rounding) and stepping at most 1 cm more in a frame.
+// Measured on the HamNoSys corpus (docs/SYNTHESIS.md, sign-hands): with no more step allowed, 94
+// signs over 5 mm; with 1 cm, 90; with the shallower clip kept whatever its step, 89, but two
+// signs newly step over 100 mm in a frame (TO-SLEEP2^ 56 -> 164 mm for 0.5 mm less depth).
+inline bool mirror_apart_is_kept(float apart_depth_m, float apart_step_m, float other_depth_m,
+                                 float other_step_m) {
+  return apart_depth_m <= other_depth_m + 1e-4f && apart_step_m <= other_step_m + 0.01f;
+}
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
-                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr);
+                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr,
+                            EscapeAlternative* escape = nullptr);
 
 // Name of the body anchor for a location (`body/chest/right`, `space/centre`), mirrored when the
 // hand's side is mirrored; empty for places on the other hand.

@@ -163,6 +163,58 @@ void choose_with_transitions(const SynthContext& ctx, const std::vector<PhraseIt
   }
 }
 
+// A mirror pair laid apart to both sides at its key pose (sign_motion.h EscapeAlternative) is
+// judged against the clip with the dominant hand alone moved out of the way, both with the
+// transitions next to the sign, as the jam rule's clips are (the escape's own jam choice made
+// first, as choose_with_transitions makes it): the laid-apart clip stays where
+// mirror_apart_is_kept says so. Judged on the sign alone, 4 HamNoSys corpus signs were 2.8-3.8
+// mm deeper with their rest transitions (PEACE1^ 0.0 -> 3.8 mm, potem 1.9 -> 4.8; docs/SYNTHESIS.md
+// sign-hands).
+void choose_mirror_apart(const SynthContext& ctx, const std::vector<PhraseItem>& items,
+                         std::vector<SignMotion>* motions, std::vector<EscapeAlternative>* escapes) {
+  const bool from_rest = ctx.options.start_from_rest;
+  auto is_sign = [&](size_t j) {
+    return items[j].kind != PhraseItem::Kind::Pause && (*motions)[j].frame_count > 0;
+  };
+  for (size_t i = 0; i < items.size(); ++i) {
+    EscapeAlternative& e = (*escapes)[i];
+    if (e.clip.frame_count == 0 || !is_sign(i)) continue;
+    const glm::quat* before = nullptr;
+    std::uint8_t before_exempt = 0;
+    for (size_t j = i; j-- > 0 && !before;)
+      if (is_sign(j)) {
+        const SignMotion& p = (*motions)[j];
+        before = &p.rotations[static_cast<size_t>(p.frame_count - 1) * ctx.rig.joint_count];
+        before_exempt = p.exempt.back();
+      }
+    if (!before && from_rest) before = ctx.rest_locals.data();
+    const glm::quat* after = nullptr;
+    std::uint8_t after_exempt = 0;
+    for (size_t j = i + 1; j < items.size() && !after; ++j)
+      if (is_sign(j)) {
+        after = (*motions)[j].rotations.data();
+        after_exempt = (*motions)[j].exempt[0];
+      }
+    if (!after && from_rest) after = ctx.rest_locals.data();
+    auto measure = [&](const SignMotion& m) {
+      return measure_with_transitions(ctx, m, before, before_exempt, after, after_exempt);
+    };
+    // The escape's own jam choice, as choose_with_transitions makes it.
+    WithTransitions other = measure(e.clip);
+    if (e.usual.frame_count > 0) {
+      const WithTransitions plain = measure(e.usual);
+      if (!(other.depth_m <= plain.depth_m + 1e-4f && other.step_m <= plain.step_m)) {
+        e.clip = std::move(e.usual);
+        other = plain;
+      }
+    }
+    const WithTransitions apart = measure((*motions)[i]);
+    if (!mirror_apart_is_kept(apart.depth_m, apart.step_m, other.depth_m, other.step_m))
+      (*motions)[i] = std::move(e.clip);
+    e = EscapeAlternative{};
+  }
+}
+
 SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem>& items) {
   SynthesisResult result;
   const SynthesisOptions& options = ctx.options;
@@ -172,14 +224,16 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
 
   // Every sign first, so all errors are reported together.
   std::vector<SignMotion> motions(items.size()), usual(items.size());
+  std::vector<EscapeAlternative> escapes(items.size());
   for (size_t i = 0; i < items.size(); ++i) {
     if (items[i].kind == PhraseItem::Kind::Pause) continue;
     std::string where = "sign " + std::to_string(i + 1) +
                         (items[i].label.empty() ? "" : " '" + items[i].label + "'");
-    synthesize_sign_motion(ctx, items[i].sign, where, &motions[i], &result.errors, &usual[i]);
+    synthesize_sign_motion(ctx, items[i].sign, where, &motions[i], &result.errors, &usual[i], &escapes[i]);
   }
   if (!result.errors.empty()) return result;
   choose_with_transitions(ctx, items, &motions, &usual);
+  choose_mirror_apart(ctx, items, &motions, &escapes);
 
   Timeline tl;
   tl.joints = J;

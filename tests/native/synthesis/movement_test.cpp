@@ -767,5 +767,38 @@ TEST(SynthesisMovementTwoHands, SideBySideHandsArePartedAlongTheLineBetweenTheir
   }
 }
 
+// A mirror pair written at one place (hamsymmlr, index hands up and palms facing at the middle of
+// the shoulder tops, moving forward and back again): both hands are laid apart to their own sides,
+// the pair still a mirror image. The escape moved the right hand alone 8 cm forward, the left
+// one stayed in the chin and, caught between the chin and the right hand, was pushed one way and
+// the other from frame to frame (the corpus's uwaga, written here by hand). Without the rule
+// (SynthContext::mirror_pairs_apart off): the project avatar 13.0 mm deep, its first sign frame's
+// wrists 4.7 cm apart in height; the reference humanoid's 8.0 cm apart in depth. With it: 0.0 mm,
+// the wrists level on both rigs (docs/SYNTHESIS.md sign-hands).
+TEST(SynthesisMovementTwoHands, AMirrorPairWrittenAtOnePlaceIsLaidApartToBothSides) {
+  notation::SignSpec spec;
+  ASSERT_TRUE(read_one_hamnosys("hamsymmlr,hamfinger2,hamextfingeru,hampalml,hamshouldertop,hammoveo,"
+                                "hamrepeatfromstart",
+                                &spec));
+  std::string error;
+  const NamedRigs rigs = reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  for (const auto& [name, av] : rigs) {
+    Rig rig;
+    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+    const SynthesisResult r = synthesize_sign(spec, av);
+    ASSERT_TRUE(r.ok()) << name;
+    EXPECT_LE(r.report.max_penetration_m, 0.005f)
+        << name << ": " << (r.report.warnings.empty() ? "" : r.report.warnings.back());
+    // The key pose is a mirror image: the wrists at one height and one depth, either side.
+    const PoseBuilder key = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+    const glm::vec3 apart = key.position(rig.arms[kRight].hand) - key.position(rig.arms[kLeft].hand);
+    EXPECT_LT(std::abs(glm::dot(apart, rig.up)), 0.01f) << name << ": the wrists " << apart.x << " "
+                                                        << apart.y << " " << apart.z << " m apart";
+    EXPECT_LT(std::abs(glm::dot(apart, rig.forward)), 0.01f) << name << ": the wrists " << apart.x << " "
+                                                             << apart.y << " " << apart.z << " m apart";
+  }
+}
+
 }  // namespace
 }  // namespace sw::synthesis
