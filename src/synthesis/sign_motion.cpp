@@ -201,9 +201,9 @@ struct HandPlan {
   // The notation says this hand stays (hamplus hamnomotion, <nomotion/>) and it has no movement
   // in any step: the frames keep it where it is (holds_still_while_the_other_moves).
   bool written_still = false;
-  // The non-dominant hand is the dominant one's copy under a left-right mirror symmetry
-  // (hamsymmlr and its combinations): the pair is a mirror image (separate_crossed_hands).
-  bool mirror_copy = false;
+  // The non-dominant hand is the dominant one's copy under a symmetry (hamsymmlr, hamsymmpar and
+  // their combinations): its place is the mirror of the dominant hand's (lay_mirror_pair_apart).
+  bool copy_of_dominant = false;
   std::vector<std::vector<Movement>> steps;
 };
 
@@ -952,28 +952,58 @@ float hands_pair_depth(const SynthContext& ctx, const std::array<HandPlan, 2>& p
                    hand_penetration(ctx.body, pb, other(d), false, true).depth_m});
 }
 
-// A mirror pair (the other hand the dominant one's copy under hamsymmlr) written at one place, or
-// at mirror places whose hands still meet, is laid apart as a signer holds it: both hands out to
-// their own sides by the same amount, the pair still a mirror image. The escape below moves the
-// dominant hand alone, along the deepest overlap's way out, often forward or up (the corpus's
-// uwaga: the right hand 8 cm in front of the left at the chin, the left one left 15 mm in the
-// chin; EQUAL9^'s 6 cm to the right, BUSH2^'s 12 cm): the pair is no longer mirrored, the mirrored movements that follow take the
-// hands through each other, and the frames' push of the second hand (only that one gives way)
-// flips from frame to frame. Searched in steps of the pair's depth (half of it each way, and
-// 2 mm), from the written places, each hand with a fresh swivel near its written one; kept only
-// where the pair comes clear (the escape's 3 mm) within kMaxOutM each way. Returns whether it did.
+// A symmetric pair (the other hand the dominant one's copy, its place mirrored: hamsymmlr,
+// hamsymmpar) written at one place, or at mirror places whose hands still meet, is laid apart as a
+// signer holds it: both hands out to their own sides by the same amount, the places still
+// mirrored. The escape below moves the dominant hand alone, along the deepest overlap's way out,
+// often forward or up (the corpus's uwaga: the right hand 8 cm in front of the left at the chin,
+// the left one left 15 mm in the chin; EQUAL9^'s 6 cm to the right, BUSH2^'s 12 cm): the places
+// are no longer mirrored, the mirrored movements that follow take the hands through each other,
+// and the frames' push of the second hand (only that one gives way) flips from frame to frame.
+// Searched in steps of the pair's depth (half of it each way, and 2 mm), from the written places,
+// each hand with a fresh swivel near its written one; kept only where the pair comes clear (the
+// escape's 3 mm) within kMaxOutM each way, neither arm more than 5 mm deeper in the trunk than
+// written. Returns whether it did (the caller keeps the clip only where it measures better:
+// synthesize_sign_motion, mirror_apart_is_kept).
 bool lay_mirror_pair_apart(Solver& solver, const std::array<HandPlan, 2>& plans, std::array<HandState, 2>* key) {
   const SynthContext& ctx = solver.ctx;
   const Rig& rig = ctx.rig;
-  if (!plans[1].mirror_copy) return false;
+  if (!plans[1].copy_of_dominant) return false;
   const glm::vec3 lateral = glm::normalize(rig.left);
   const glm::vec3 apart = (*key)[0].target - (*key)[1].target;
-  // Mirror places: the targets differ along the body's left axis only, each hand on its own side
-  // or at the middle (not crossed: LOVE's fists are written each at the other side of the chest).
+  // Mirror places: the targets differ along the body's left axis only, each hand on its own side,
+  // at the middle, or crossed by less than 5 cm (a contact point's offset at a place in the middle:
+  // myć twarz's flat hands at the head, 3.1 cm). Not hands written crossed: LOVE's fists, each at
+  // the other side of the chest, 15.2 cm.
   if (glm::length(apart - glm::dot(apart, lateral) * lateral) > 0.01f) return false;
   const glm::vec3 dominant_side = plans[0].side == kLeft ? lateral : -lateral;
-  if (glm::dot(apart, dominant_side) < -0.01f) return false;
-  const float written_depth = hands_pair_depth(ctx, plans, *key, nullptr);
+  if (glm::dot(apart, dominant_side) < -0.05f) return false;
+  // The pair's depth (either hand in the other hand or forearm, the forearms through each other)
+  // and each arm's in the trunk, posed at `k`'s swivels.
+  auto measure = [&](const std::array<HandState, 2>& k, std::array<float, 2>* trunk) {
+    PoseBuilder pb(rig);
+    for (int i = 0; i < 2; ++i) {
+      ArmTarget t;
+      t.point = k[i].target;
+      t.contact_offset = k[i].offset;
+      t.hand_delta = k[i].delta;
+      t.auto_swivel = false;
+      t.swivel_rad = k[i].swivel;
+      t.body = &ctx.body;
+      t.hand_contact = plans[i].exempt_trunk;
+      const ArmPose ap = solve_arm(rig, plans[i].side, t);
+      (*trunk)[i] = ap.trunk_depth_m;
+      apply_arm(rig, plans[i].side, ap, &pb);
+      pose_fingers(rig, plans[i].side, k[i].angles, ap.hand, &pb);
+      pb.finalize();
+    }
+    const Side d = plans[0].side;
+    return std::max({arm_penetration(ctx.body, pb, d, false, plans[0].exempt_trunk, true).depth_m,
+                     hand_penetration(ctx.body, pb, d, false, true).depth_m,
+                     hand_penetration(ctx.body, pb, other(d), false, true).depth_m});
+  };
+  std::array<float, 2> written_trunk{};
+  const float written_depth = measure(*key, &written_trunk);
   if (written_depth <= 0.003f) return false;
   constexpr float kMaxOutM = 0.15f;
   constexpr int kRounds = 12;
@@ -995,7 +1025,12 @@ bool lay_mirror_pair_apart(Solver& solver, const std::array<HandPlan, 2>& plans,
       t.near_swivel_rad = (*key)[i].swivel;
       k[i].swivel = solve_arm(rig, plans[i].side, t).swivel_rad;
     }
-    depth = hands_pair_depth(ctx, plans, k, nullptr);
+    // An arm taken deeper into the trunk than at the written places by more than the 5 mm rule
+    // stops the search (the escape judges its fresh swivels so too, separate_along_escape): the
+    // way out to the sides is then through the body.
+    std::array<float, 2> trunk{};
+    depth = measure(k, &trunk);
+    if (trunk[0] > written_trunk[0] + 0.005f || trunk[1] > written_trunk[1] + 0.005f) return false;
     if (depth <= 0.003f) {
       *key = k;
       return true;
@@ -1382,7 +1417,7 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
     n.mirror_x = !lh;
     n.move_mirror = sym_axes;
     n.move_mirror.x = sym_axes.x != lh;
-    n.mirror_copy = sym_axes.x;
+    n.copy_of_dominant = true;
   }
   for (const auto& step : sign.movements) {
     d.steps.push_back(step.dominant);
