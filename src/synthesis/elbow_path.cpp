@@ -343,10 +343,30 @@ bool within_depths(const ArmDepths& trial, const ArmDepths& written) {
          trial.hands_m <= allowed(written.hands_m);
 }
 
+// The largest step of a wrist or elbow in one frame (clip_steps.h measure_frame_steps' arm
+// measure), the arms' joints posed on their own (SubsetPose).
+float largest_arm_step(const Rig& rig, int frame_count, const std::vector<glm::quat>& rotations) {
+  SubsetPose pb(rig, {rig.arms[kLeft].lower, rig.arms[kLeft].hand, rig.arms[kRight].lower,
+                      rig.arms[kRight].hand});
+  glm::vec3 previous[4];
+  float step = 0.0f;
+  for (int f = 0; f < frame_count; ++f) {
+    pb.set_from_local(&rotations[static_cast<size_t>(f) * rig.joint_count]);
+    const glm::vec3 at[4] = {pb.position(rig.arms[kLeft].lower), pb.position(rig.arms[kLeft].hand),
+                             pb.position(rig.arms[kRight].lower), pb.position(rig.arms[kRight].hand)};
+    for (int k = 0; k < 4; ++k) {
+      if (f > 0) step = std::max(step, glm::length(at[k] - previous[k]));
+      previous[k] = at[k];
+    }
+  }
+  return step;
+}
+
 }  // namespace
 
 int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int frame_count,
-                         std::vector<glm::quat>* rotations) {
+                         std::vector<glm::quat>* rotations, float* largest_arm_step_m) {
+  if (largest_arm_step_m) *largest_arm_step_m = 0.0f;
   if (frame_count < 2 || fps <= 0.0f) return 0;
   // One pass to find the arms whose elbow swings faster than the trigger at all (most clips have
   // none, and are left as they are at the cost of posing the arms' joints once per frame). It
@@ -357,14 +377,19 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
   {
     SubsetPose pb(rig, {rig.arms[kLeft].upper, rig.arms[kLeft].lower, rig.arms[kLeft].hand,
                         rig.arms[kRight].upper, rig.arms[kRight].lower, rig.arms[kRight].hand});
-    glm::vec3 previous[2];
+    glm::vec3 previous[2], previous_wrist[2];
     const float trigger_m = kSwingTriggerMPerS / fps;
+    float step = 0.0f;
     for (int f = 0; f < frame_count; ++f) {
       pb.set_from_local(&(*rotations)[static_cast<size_t>(f) * rig.joint_count]);
       for (Side s : {kLeft, kRight}) {
         const ArmRig& arm = rig.arms[s];
         const glm::vec3 shoulder = pb.position(arm.upper), elbow = pb.position(arm.lower);
-        const glm::vec3 line = pb.position(arm.hand) - shoulder;
+        const glm::vec3 wrist = pb.position(arm.hand);
+        const glm::vec3 line = wrist - shoulder;
+        if (f > 0)
+          step = std::max({step, glm::length(elbow - previous[s]), glm::length(wrist - previous_wrist[s])});
+        previous_wrist[s] = wrist;
         if (f > 0 && glm::length(line) > 1e-4f) {
           const glm::vec3 axis = glm::normalize(line);
           const glm::vec3 own = reject(elbow - shoulder, axis),
@@ -376,6 +401,7 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
         previous[s] = elbow;
       }
     }
+    if (largest_arm_step_m) *largest_arm_step_m = step;
   }
   int changed = 0;
   for (Side s : {kLeft, kRight}) {
@@ -421,6 +447,8 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
     rotations->swap(best);
     changed += best_changed;
   }
+  if (changed > 0 && largest_arm_step_m)
+    *largest_arm_step_m = largest_arm_step(rig, frame_count, *rotations);
   return changed;
 }
 

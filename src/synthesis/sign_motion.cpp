@@ -158,9 +158,6 @@ constexpr float kStepHandPeakSpeedMPerS = 2.7f;
 // factor): up to this many stretches, each taken only when it measures better (PLEASE on the
 // reference at 60 fps x 1.25: 65.0, 45.5, then 50.2 m/s^2 at one more state).
 constexpr int kStepAccelRounds = 3;
-// How much deeper a sign solved with its continued frames' branches chosen (synthesize_sign_motion)
-// may go than the usual solve and still be kept: 0.5 mm, as for one frame's choice.
-constexpr float kBranchSignSlackM = 0.0005f;
 
 HandState mix_state(const HandState& a, const HandState& b, float s) {
   HandState o;
@@ -2933,13 +2930,6 @@ bool sign_second_is_better(const SynthContext& ctx, const SignMotion& first, con
   return second_depth <= depth + kBranchSignSlackM && second_step < step;
 }
 
-// A sign's clip's largest arm step over which it is solved again in the swivel zero of fixed
-// handedness (docs/SYNTHESIS.md swivel-choice): no signer's elbow moves 15 cm in a frame (at 30
-// fps, 4.5 m/s); the lexicon's largest step is 68 mm, so it is never solved twice; main's
-// HamNoSys corpus has 52 signs over it, among them the usual zero's half turns at the shoulder
-// joint's coronal plane (szkoła 464 mm, TO-SLEEP2^ 553 mm: elbow-leap).
-constexpr float kSwivelChoiceStepM = 0.15f;
-
 bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::SignSpec& sign,
                                     const std::string& where, SignMotion* out,
                                     std::vector<SynthesisError>* errors, SignMotion* usual_alternative);
@@ -2955,9 +2945,14 @@ bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::Sig
 // deeper by > 2 mm), so each sign keeps the zero that serves it. The clips without the jam rule
 // (`usual_alternative`) are chosen between by the same rule on their own, as in the branch
 // choice. The alternative's errors repeat the first solve's (the same sign and key pose).
+// The threshold (sign_motion.h kSwivelChoiceStepM): main's HamNoSys corpus had 52 signs over it
+// before the choice, among them the usual zero's half turns at the shoulder joint's coronal plane
+// (szkoła 464 mm, TO-SLEEP2^ 553 mm: elbow-leap); the lexicon is never solved twice.
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
-                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative) {
+                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative,
+                            OtherZeroSolve* other_zero) {
+  if (other_zero) *other_zero = OtherZeroSolve{};
   if (!synthesize_sign_motion_in_zero(ctx, sign, where, out, errors, usual_alternative)) return false;
   if (ctx.rig.fixed_handed_swivel_zero || !ctx.options.avoid_collisions || out->frame_count == 0) return true;
   float step = 0.0f;
@@ -2970,13 +2965,25 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (!synthesize_sign_motion_in_zero(fixed, sign, where, &other, &repeated,
                                       usual_alternative ? &other_alternative : nullptr))
     return true;
+  // Each zero's own clip without the jam rule, before the two are chosen between below.
+  SignMotion first_alternative = usual_alternative ? *usual_alternative : SignMotion{};
   if (usual_alternative && (usual_alternative->frame_count > 0 || other_alternative.frame_count > 0)) {
     const SignMotion& first = usual_alternative->frame_count > 0 ? *usual_alternative : *out;
     const SignMotion& second = other_alternative.frame_count > 0 ? other_alternative : other;
     SignMotion kept = sign_second_is_better(ctx, first, second) ? second : first;
     *usual_alternative = std::move(kept);
   }
-  if (sign_second_is_better(ctx, *out, other)) *out = std::move(other);
+  if (sign_second_is_better(ctx, *out, other)) {
+    if (other_zero) {
+      other_zero->motion = std::move(*out);
+      other_zero->usual_alternative = std::move(first_alternative);
+    }
+    *out = std::move(other);
+  } else if (other_zero) {
+    other_zero->motion = std::move(other);
+    other_zero->usual_alternative = std::move(other_alternative);
+  }
+  if (other_zero) other_zero->solved = true;
   return true;
 }
 
