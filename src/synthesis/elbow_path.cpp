@@ -121,7 +121,7 @@ void turn_arm(const Rig& rig, const ArmRig& arm, const glm::quat& turn, const Po
 // per-frame step against 3 m/s and its largest change of step against 50 m/s^2 (the smoothness
 // tests' 100 mm and 56 mm at 30 fps), 1 on a bound.
 float elbow_roughness(const Rig& rig, Side side, float fps, int frame_count,
-                      const std::vector<glm::quat>& rotations) {
+                      const std::vector<glm::quat>& rotations, float* largest_step_m = nullptr) {
   SubsetPose pb(rig, {rig.arms[side].lower});  // the elbow's position only
   float step = 0.0f, change = 0.0f;
   glm::vec3 previous{0.0f}, previous_step{0.0f};
@@ -136,6 +136,7 @@ float elbow_roughness(const Rig& rig, Side side, float fps, int frame_count,
     }
     previous = elbow;
   }
+  if (largest_step_m) *largest_step_m = step;
   return std::max(step * fps / kStepBoundMPerS, change * fps * fps / kChangeBoundMPerS2);
 }
 
@@ -343,25 +344,6 @@ bool within_depths(const ArmDepths& trial, const ArmDepths& written) {
          trial.hands_m <= allowed(written.hands_m);
 }
 
-// The largest step of a wrist or elbow in one frame (clip_steps.h measure_frame_steps' arm
-// measure), the arms' joints posed on their own (SubsetPose).
-float largest_arm_step(const Rig& rig, int frame_count, const std::vector<glm::quat>& rotations) {
-  SubsetPose pb(rig, {rig.arms[kLeft].lower, rig.arms[kLeft].hand, rig.arms[kRight].lower,
-                      rig.arms[kRight].hand});
-  glm::vec3 previous[4];
-  float step = 0.0f;
-  for (int f = 0; f < frame_count; ++f) {
-    pb.set_from_local(&rotations[static_cast<size_t>(f) * rig.joint_count]);
-    const glm::vec3 at[4] = {pb.position(rig.arms[kLeft].lower), pb.position(rig.arms[kLeft].hand),
-                             pb.position(rig.arms[kRight].lower), pb.position(rig.arms[kRight].hand)};
-    for (int k = 0; k < 4; ++k) {
-      if (f > 0) step = std::max(step, glm::length(at[k] - previous[k]));
-      previous[k] = at[k];
-    }
-  }
-  return step;
-}
-
 }  // namespace
 
 int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int frame_count,
@@ -374,12 +356,15 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
   // posed (SubsetPose, the full pose's positions to the bit), not the fingers, legs and head (the
   // lexicon, each sign from rest and back: the pass 88.8 -> 18.8 M instructions, of 1.66 G).
   bool swings[2] = {false, false};
+  // Each arm's largest wrist and elbow step (largest_arm_step_m). A carried swing turns the arm
+  // about the line through the shoulder joint and the wrist, so the wrists' steps stay these; a
+  // carried elbow's are its kept variant's (elbow_roughness measures them).
+  float wrist_step[2] = {0.0f, 0.0f}, elbow_step[2] = {0.0f, 0.0f};
   {
     SubsetPose pb(rig, {rig.arms[kLeft].upper, rig.arms[kLeft].lower, rig.arms[kLeft].hand,
                         rig.arms[kRight].upper, rig.arms[kRight].lower, rig.arms[kRight].hand});
     glm::vec3 previous[2], previous_wrist[2];
     const float trigger_m = kSwingTriggerMPerS / fps;
-    float step = 0.0f;
     for (int f = 0; f < frame_count; ++f) {
       pb.set_from_local(&(*rotations)[static_cast<size_t>(f) * rig.joint_count]);
       for (Side s : {kLeft, kRight}) {
@@ -387,8 +372,10 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
         const glm::vec3 shoulder = pb.position(arm.upper), elbow = pb.position(arm.lower);
         const glm::vec3 wrist = pb.position(arm.hand);
         const glm::vec3 line = wrist - shoulder;
-        if (f > 0)
-          step = std::max({step, glm::length(elbow - previous[s]), glm::length(wrist - previous_wrist[s])});
+        if (f > 0) {
+          elbow_step[s] = std::max(elbow_step[s], glm::length(elbow - previous[s]));
+          wrist_step[s] = std::max(wrist_step[s], glm::length(wrist - previous_wrist[s]));
+        }
         previous_wrist[s] = wrist;
         if (f > 0 && glm::length(line) > 1e-4f) {
           const glm::vec3 axis = glm::normalize(line);
@@ -401,7 +388,6 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
         previous[s] = elbow;
       }
     }
-    if (largest_arm_step_m) *largest_arm_step_m = step;
   }
   int changed = 0;
   for (Side s : {kLeft, kRight}) {
@@ -421,6 +407,7 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
     std::vector<glm::quat> best;
     int best_changed = 0;
     float best_roughness = elbow_roughness(rig, s, fps, frame_count, *rotations);
+    float best_step = elbow_step[s];
     for (int variant = 0; variant < 6; ++variant) {
       const bool by_body = variant % 2 == 0;
       if (!body && by_body) continue;
@@ -434,21 +421,24 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
                                          : continue_arm_path(rig, route, s, fps, frame_count, true,
                                                              own_wrist_bend, &trial, &count);
       if (!arrived || count == 0) continue;
-      const float roughness = elbow_roughness(rig, s, fps, frame_count, trial);
+      float trial_step = 0.0f;
+      const float roughness = elbow_roughness(rig, s, fps, frame_count, trial, &trial_step);
       if (roughness >= best_roughness - 1e-3f) continue;
       if (largest_wrist_bend(rig, s, frame_count, trial) > allowed_wrist_bend) continue;
       if (body && !within_depths(deepest_arm(rig, *body, s, frame_count, trial), written_depths))
         continue;
       best_roughness = roughness;
+      best_step = trial_step;
       best.swap(trial);
       best_changed = count;
     }
     if (best_changed == 0) continue;
     rotations->swap(best);
     changed += best_changed;
+    elbow_step[s] = best_step;
   }
-  if (changed > 0 && largest_arm_step_m)
-    *largest_arm_step_m = largest_arm_step(rig, frame_count, *rotations);
+  if (largest_arm_step_m)
+    *largest_arm_step_m = std::max({wrist_step[0], wrist_step[1], elbow_step[0], elbow_step[1]});
   return changed;
 }
 
