@@ -356,7 +356,7 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
   // posed (SubsetPose, the full pose's positions to the bit), not the fingers, legs and head (the
   // lexicon, each sign from rest and back: the pass 88.8 -> 18.8 M instructions, of 1.66 G).
   bool swings[2] = {false, false};
-  // Each arm's largest wrist and elbow step (largest_arm_step_m). A carried swing turns the arm
+  // Each arm's largest wrist and elbow step, squared (largest_arm_step_m). A carried swing turns the arm
   // about the line through the shoulder joint and the wrist, so the wrists' steps stay these; a
   // carried elbow's are its kept variant's (elbow_roughness measures them).
   float wrist_step[2] = {0.0f, 0.0f}, elbow_step[2] = {0.0f, 0.0f};
@@ -372,9 +372,10 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
         const glm::vec3 shoulder = pb.position(arm.upper), elbow = pb.position(arm.lower);
         const glm::vec3 wrist = pb.position(arm.hand);
         const glm::vec3 line = wrist - shoulder;
-        if (f > 0) {
-          elbow_step[s] = std::max(elbow_step[s], glm::length(elbow - previous[s]));
-          wrist_step[s] = std::max(wrist_step[s], glm::length(wrist - previous_wrist[s]));
+        if (largest_arm_step_m && f > 0) {  // squared here, the root taken once at the end
+          const glm::vec3 de = elbow - previous[s], dw = wrist - previous_wrist[s];
+          elbow_step[s] = std::max(elbow_step[s], glm::dot(de, de));
+          wrist_step[s] = std::max(wrist_step[s], glm::dot(dw, dw));
         }
         previous_wrist[s] = wrist;
         if (f > 0 && glm::length(line) > 1e-4f) {
@@ -407,7 +408,7 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
     std::vector<glm::quat> best;
     int best_changed = 0;
     float best_roughness = elbow_roughness(rig, s, fps, frame_count, *rotations);
-    float best_step = elbow_step[s];
+    float best_step = elbow_step[s];  // squared
     for (int variant = 0; variant < 6; ++variant) {
       const bool by_body = variant % 2 == 0;
       if (!body && by_body) continue;
@@ -428,7 +429,7 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
       if (body && !within_depths(deepest_arm(rig, *body, s, frame_count, trial), written_depths))
         continue;
       best_roughness = roughness;
-      best_step = trial_step;
+      best_step = trial_step * trial_step;
       best.swap(trial);
       best_changed = count;
     }
@@ -438,7 +439,7 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
     elbow_step[s] = best_step;
   }
   if (largest_arm_step_m)
-    *largest_arm_step_m = std::max({wrist_step[0], wrist_step[1], elbow_step[0], elbow_step[1]});
+    *largest_arm_step_m = std::sqrt(std::max({wrist_step[0], wrist_step[1], elbow_step[0], elbow_step[1]}));
   return changed;
 }
 
