@@ -67,6 +67,7 @@ constexpr float kBranchSignSlackM = 0.0005f;
 // (synthesize.cpp). `solved` false: the sign was solved in one zero only.
 struct OtherZeroSolve {
   bool solved = false;
+  bool kept_fixed = false;  // solved: the kept clip is the fixed zero's (this one the usual's)
   SignMotion motion, usual_alternative;
 };
 
@@ -79,6 +80,15 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr,
                             OtherZeroSolve* other_zero = nullptr);
+
+// The sign solved in ctx's swivel zero only (no zero choice), with more last ramp rounds where
+// the last one's own corrections jump between frames and the sign's clip leaps (an arm step over
+// kSwivelChoiceStepM): those corrections come on at once, nothing ramps them (sign_motion.cpp
+// ramp_rounds). For the phrase to judge with the transitions (synthesize.cpp); `errors` repeat
+// the first solve's.
+bool synthesize_sign_motion_ramped_again(const SynthContext& ctx, const notation::SignSpec& sign,
+                                         const std::string& where, SignMotion* out,
+                                         std::vector<SynthesisError>* errors, SignMotion* usual_alternative);
 
 // Name of the body anchor for a location (`body/chest/right`, `space/centre`), mirrored when the
 // hand's side is mirrored; empty for places on the other hand.

@@ -208,24 +208,39 @@ bool choose_zero_with_transitions(const SynthContext& ctx, const std::vector<Phr
     const WithTransitions kept = measure_with_transitions(ctx, (*motions)[i], n, true);
     if (!(kept.step_m > kSwivelChoiceStepM)) continue;
     OtherZeroSolve& o = (*others)[i];
+    const std::string where = "sign " + std::to_string(i + 1) + (items[i].label.empty() ? "" : " '" + items[i].label + "'");
+    SynthContext fixed = ctx;
+    fixed.rig.fixed_handed_swivel_zero = true;
+    bool in_fixed = o.solved && o.kept_fixed;  // the zero of the kept clip
     if (!o.solved) {
-      SynthContext fixed = ctx;
-      fixed.rig.fixed_handed_swivel_zero = true;
       std::vector<SynthesisError> repeated;  // the same sign and key pose: the first solve's errors
       o.solved = true;
-      if (!synthesize_sign_motion(fixed, items[i].sign, "", &o.motion, &repeated, &o.usual_alternative))
+      if (!synthesize_sign_motion(fixed, items[i].sign, where, &o.motion, &repeated, &o.usual_alternative))
         o.motion = SignMotion{};
     }
-    if (o.motion.frame_count == 0) continue;
-    // The other zero's clip through the same jam judgement as the phrase's (choose_with_transitions),
-    // then measured with the elbow's path.
-    choose_jam_with_transitions(ctx, n, ctx.options.carry_elbows, &o.motion, &o.usual_alternative);
-    const WithTransitions other = measure_with_transitions(ctx, o.motion, n, true);
-    if (other.depth_m <= kept.depth_m + kBranchSignSlackM && other.step_m < kept.step_m) {
-      (*motions)[i] = std::move(o.motion);
+    WithTransitions best = kept;
+    // A candidate clip through the same jam judgement as the phrase's (choose_with_transitions),
+    // measured with the elbow's path, and kept where no deeper and stepping less.
+    auto consider = [&](SignMotion* m, SignMotion* m_usual) {
+      if (m->frame_count == 0) return false;
+      choose_jam_with_transitions(ctx, n, ctx.options.carry_elbows, m, m_usual);
+      const WithTransitions w = measure_with_transitions(ctx, *m, n, true);
+      if (!(w.depth_m <= best.depth_m + kBranchSignSlackM && w.step_m < best.step_m)) return false;
+      (*motions)[i] = std::move(*m);
+      best = w;
       changed = true;
-    }
+      return true;
+    };
+    if (consider(&o.motion, &o.usual_alternative)) in_fixed = !in_fixed;
     o = OtherZeroSolve{};
+    // Then, where it still leaps, the kept zero's solve with the extra last ramp rounds (the last
+    // round's own corrections come on at once: sign_motion.h synthesize_sign_motion_ramped_again).
+    if (!(best.step_m > kSwivelChoiceStepM)) continue;
+    SignMotion again, again_usual;
+    std::vector<SynthesisError> repeated;
+    if (synthesize_sign_motion_ramped_again(in_fixed ? fixed : ctx, items[i].sign, where, &again, &repeated,
+                                            &again_usual))
+      consider(&again, &again_usual);
   }
   return changed;
 }
