@@ -54,13 +54,41 @@ struct SignMotion {
   int pushes = 0;                     // frames pushed out of the body
 };
 
+// A sign's clip's largest arm step in one frame (a wrist or elbow; clip_steps.h) over which it
+// is solved again in the other swivel zero (docs/SYNTHESIS.md swivel-choice, leap): no signer's
+// elbow moves 15 cm in a frame (at 30 fps, 4.5 m/s); the lexicon's largest step is 68 mm.
+constexpr float kSwivelChoiceStepM = 0.15f;
+// How much deeper a sign's second solve (the other branch of its continued wrist flips, the other
+// swivel zero) may go than the first and still be kept: 0.5 mm, as for one frame's choice.
+constexpr float kBranchSignSlackM = 0.0005f;
+
+// The sign solved in the swivel zero synthesize_sign_motion did not keep, with its clip without
+// the jam rule (as `usual_alternative` below), for the phrase to judge with the transitions
+// (synthesize.cpp). `solved` false: the sign was solved in one zero only.
+struct OtherZeroSolve {
+  bool solved = false;
+  bool kept_fixed = false;  // solved: the kept clip is the fixed zero's (this one the usual's)
+  SignMotion motion, usual_alternative;
+};
+
 // Synthesises one sign's frames (no transitions in or out). `where` prefixes error locations.
 // `usual_alternative` (optional): where a hand caught between two capsules was sent out by the
 // jam rule (sign_motion.cpp) and that clip kept, the clip solved without the rule, for the caller
 // to judge the two with the transitions next to the sign; otherwise left empty (frame_count 0).
+// `other_zero` (optional): filled where the sign was solved in both swivel zeros.
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
-                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr);
+                            std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr,
+                            OtherZeroSolve* other_zero = nullptr);
+
+// The sign solved in ctx's swivel zero only (no zero choice), with more last ramp rounds where
+// the last one's own corrections jump between frames and the sign's clip leaps (an arm step over
+// kSwivelChoiceStepM): those corrections come on at once, nothing ramps them (sign_motion.cpp
+// ramp_rounds). For the phrase to judge with the transitions (synthesize.cpp); `errors` repeat
+// the first solve's.
+bool synthesize_sign_motion_ramped_again(const SynthContext& ctx, const notation::SignSpec& sign,
+                                         const std::string& where, SignMotion* out,
+                                         std::vector<SynthesisError>* errors, SignMotion* usual_alternative);
 
 // Name of the body anchor for a location (`body/chest/right`, `space/centre`), mirrored when the
 // hand's side is mirrored; empty for places on the other hand.
