@@ -2961,7 +2961,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (!synthesize_sign_motion_in_zero(ctx, sign, where, out, errors, usual_alternative)) return false;
   if (ctx.rig.fixed_handed_swivel_zero || !ctx.options.avoid_collisions || out->frame_count == 0) return true;
   float step = 0.0f;
-  sign_depth_and_step(ctx, *out, &step);
+  out->sign_depth_m = sign_depth_and_step(ctx, *out, &step);
   if (!(step > kSwivelChoiceStepM)) return true;
   SynthContext fixed = ctx;
   fixed.rig.fixed_handed_swivel_zero = true;
@@ -2976,8 +2976,20 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     SignMotion kept = sign_second_is_better(ctx, first, second) ? second : first;
     *usual_alternative = std::move(kept);
   }
-  if (sign_second_is_better(ctx, *out, other)) *out = std::move(other);
+  if (sign_second_is_better(ctx, *out, other)) {
+    *out = std::move(other);
+    float other_step = 0.0f;
+    out->sign_depth_m = sign_depth_and_step(ctx, *out, &other_step);
+  }
   return true;
+}
+
+// The solves above measure the kept clip's depth (sign_depth_and_step) and leave it in
+// sign_depth_m; a clip they did not measure (the jam rule's usual alternative) is measured here.
+float sign_motion_depth(const SynthContext& ctx, const SignMotion& m) {
+  if (m.sign_depth_m >= 0.0f) return m.sign_depth_m;
+  float step = 0.0f;
+  return m.frame_count > 0 ? sign_depth_and_step(ctx, m, &step) : 0.0f;
 }
 
 namespace {

@@ -52,6 +52,9 @@ struct SignMotion {
   std::vector<float> orientation_error_rad;
   std::vector<std::string> warnings;
   int pushes = 0;                     // frames pushed out of the body
+  // The deepest frame of the sign's own clip as the phrase measures it (after the elbow's path;
+  // sign_motion.cpp sign_depth_and_step), where synthesize_sign_motion measured it; -1: not.
+  float sign_depth_m = -1.0f;
 };
 
 // Synthesises one sign's frames (no transitions in or out). `where` prefixes error locations.
@@ -61,6 +64,10 @@ struct SignMotion {
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr);
+
+// A sign's own clip's deepest frame as the phrase measures it (m.sign_depth_m where
+// synthesize_sign_motion measured it, else measured here).
+float sign_motion_depth(const SynthContext& ctx, const SignMotion& m);
 
 // Name of the body anchor for a location (`body/chest/right`, `space/centre`), mirrored when the
 // hand's side is mirrored; empty for places on the other hand.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "face/face_track.h"
 #include "skeleton/humanoid_names.h"
@@ -89,12 +90,16 @@ namespace {
 // frame after; either may be absent), as the phrase's final check measures it: the elbow's path
 // made continuous (options.carry_elbows), then the deepest unintended penetration and the
 // largest wrist or elbow step in one frame.
+// With `sides`, also how far each wrist goes out to its own side in the transitions (from the
+// midline, their widest frame), with the elbow's path carried whatever the options say (as
+// sign_depth_and_step measures a sign, so a choice made on it is the same with and without it).
 struct WithTransitions {
-  float depth_m = 0.0f, step_m = 0.0f;
+  float depth_m = 0.0f, step_m = 0.0f, change_m = 0.0f;
+  float wrist_out_m[2] = {0.0f, 0.0f};
 };
 WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMotion& m, const glm::quat* before,
                                          std::uint8_t before_exempt, const glm::quat* after,
-                                         std::uint8_t after_exempt) {
+                                         std::uint8_t after_exempt, bool sides = false) {
   Timeline seg;
   seg.joints = ctx.rig.joint_count;
   if (before) {
@@ -102,7 +107,9 @@ WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMoti
     TransitionPlan in = plan_transition(ctx, before, m.rotations.data(), before_exempt, m.exempt[0]);
     if (in.k > 1) seg.append(in.frames.data(), in.k - 1, in.exempt.data());
   }
+  const int sign_first = seg.count();
   seg.append(m.rotations.data(), m.frame_count, m.exempt.data());
+  const int sign_last = seg.count() - 1;
   if (after) {
     TransitionPlan out = plan_transition(ctx, seg.last(), after, seg.exempt.back(), after_exempt);
     if (out.k > 1) seg.append(out.frames.data(), out.k - 1, out.exempt.data());
@@ -112,12 +119,55 @@ WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMoti
   c.fps = ctx.options.fps;
   c.frame_count = seg.count();
   c.rotations = std::move(seg.frames);
-  if (ctx.options.carry_elbows)
+  if (ctx.options.carry_elbows || sides)
     continue_elbow_paths(ctx.rig, &ctx.body, c.fps, c.frame_count, &c.rotations);
   WithTransitions w;
+  if (sides) {
+    PoseBuilder pb(ctx.rig);
+    const int J = ctx.rig.joint_count;
+    for (int side = 0; side < 2; ++side) w.wrist_out_m[side] = -1e30f;
+    for (int f = 0; f < c.frame_count; ++f) {
+      if (f >= sign_first && f <= sign_last) continue;  // the transitions' own frames
+      pb.set_from_local(&c.rotations[static_cast<size_t>(f) * J]);
+      for (int side = 0; side < 2; ++side) {
+        const float out = glm::dot(pb.position(ctx.rig.arms[side].hand), side == kLeft ? ctx.rig.left : -ctx.rig.left);
+        w.wrist_out_m[side] = std::max(w.wrist_out_m[side], out);
+      }
+    }
+  }
   w.depth_m = max_penetration(ctx, c.rotations.data(), c.frame_count, seg.exempt.data(), nullptr, nullptr);
-  w.step_m = measure_frame_steps(ctx.rig, c).step_m;
+  const FrameSteps steps = measure_frame_steps(ctx.rig, c);
+  w.step_m = steps.step_m;
+  w.change_m = steps.change_m;
   return w;
+}
+
+// The frames next to sign i that the phrase's transitions go from and to: the sign before's last
+// frame (or the rest pose from rest), the sign after's first (or the rest pose); null: none.
+struct Neighbours {
+  const glm::quat* before = nullptr;
+  std::uint8_t before_exempt = 0;
+  const glm::quat* after = nullptr;
+  std::uint8_t after_exempt = 0;
+};
+Neighbours neighbours_of(const SynthContext& ctx, const std::vector<PhraseItem>& items,
+                         const std::vector<SignMotion>& motions, size_t i) {
+  auto is_sign = [&](size_t j) { return items[j].kind != PhraseItem::Kind::Pause && motions[j].frame_count > 0; };
+  Neighbours n;
+  for (size_t j = i; j-- > 0 && !n.before;)
+    if (is_sign(j)) {
+      const SignMotion& p = motions[j];
+      n.before = &p.rotations[static_cast<size_t>(p.frame_count - 1) * ctx.rig.joint_count];
+      n.before_exempt = p.exempt.back();
+    }
+  if (!n.before && ctx.options.start_from_rest) n.before = ctx.rest_locals.data();
+  for (size_t j = i + 1; j < items.size() && !n.after; ++j)
+    if (is_sign(j)) {
+      n.after = motions[j].rotations.data();
+      n.after_exempt = motions[j].exempt[0];
+    }
+  if (!n.after && ctx.options.start_from_rest) n.after = ctx.rest_locals.data();
+  return n;
 }
 
 // The jam rule's clip (sign_motion.h usual_alternative) was chosen on the sign's own frames; the
@@ -132,34 +182,90 @@ WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMoti
 void choose_with_transitions(const SynthContext& ctx, const std::vector<PhraseItem>& items,
                              std::vector<SignMotion>* motions, std::vector<SignMotion>* usual_clips) {
   std::vector<SignMotion>& usual = *usual_clips;
-  const bool from_rest = ctx.options.start_from_rest;
-  auto is_sign = [&](size_t j) {
-    return items[j].kind != PhraseItem::Kind::Pause && (*motions)[j].frame_count > 0;
-  };
   for (size_t i = 0; i < items.size(); ++i) {
-    if (usual[i].frame_count == 0 || !is_sign(i)) continue;
-    const glm::quat* before = nullptr;
-    std::uint8_t before_exempt = 0;
-    for (size_t j = i; j-- > 0 && !before;)
-      if (is_sign(j)) {
-        const SignMotion& p = (*motions)[j];
-        before = &p.rotations[static_cast<size_t>(p.frame_count - 1) * ctx.rig.joint_count];
-        before_exempt = p.exempt.back();
-      }
-    if (!before && from_rest) before = ctx.rest_locals.data();
-    const glm::quat* after = nullptr;
-    std::uint8_t after_exempt = 0;
-    for (size_t j = i + 1; j < items.size() && !after; ++j)
-      if (is_sign(j)) {
-        after = (*motions)[j].rotations.data();
-        after_exempt = (*motions)[j].exempt[0];
-      }
-    if (!after && from_rest) after = ctx.rest_locals.data();
+    if (usual[i].frame_count == 0 || items[i].kind == PhraseItem::Kind::Pause || (*motions)[i].frame_count == 0)
+      continue;
+    const Neighbours n = neighbours_of(ctx, items, *motions, i);
     const WithTransitions jam =
-        measure_with_transitions(ctx, (*motions)[i], before, before_exempt, after, after_exempt);
-    const WithTransitions plain = measure_with_transitions(ctx, usual[i], before, before_exempt, after, after_exempt);
+        measure_with_transitions(ctx, (*motions)[i], n.before, n.before_exempt, n.after, n.after_exempt);
+    const WithTransitions plain =
+        measure_with_transitions(ctx, usual[i], n.before, n.before_exempt, n.after, n.after_exempt);
     if (!(jam.depth_m <= plain.depth_m + 1e-4f && jam.step_m <= plain.step_m)) (*motions)[i] = std::move(usual[i]);
     usual[i] = SignMotion{};
+  }
+}
+
+// The shoulder girdle's wider protraction as a per-sign alternative (Rig::protraction_zone,
+// docs/SYNTHESIS.md arm-side). A sign whose own frames leave an arm deeper than kWideFromM in the
+// body is solved once more in each wider zone (arm_ik.cpp kProtractionZones: the girdle
+// protracted for wrists across the body further in front of the shoulder and higher up) and the
+// shallowest alternative kept where the sign with its transitions (built as the phrase builds
+// them) is shallower by kWideGainM and steps no more in a frame, nor changes its step more
+// (kWideStepSlackM); that takes no wrist further out to its side in the transitions
+// (kWideOutSlackM, or beyond kWideOutFromRestM out from the rest pose's wrist, the bound of
+// SynthesisCollision.FarSideRestTransitionsBringTheHandAcrossInFront: a rest transition routed
+// round the body's side instead of across its front); and that leaves a touch no further off its
+// place (kWideStepSlackM) and a hand held off no further out of the 3-10 cm band than it was
+// (the alternative's key pose is placed afresh). Signs within the bound cost nothing: the
+// lexicon's are, on both rigs.
+constexpr float kWideFromM = 0.005f;
+constexpr float kWideGainM = 0.001f;
+constexpr float kWideStepSlackM = 0.002f;
+constexpr float kWideOutSlackM = 0.01f, kWideOutFromRestM = 0.04f;
+constexpr float kHeldOffNearM = 0.03f, kHeldOffFarM = 0.10f;
+bool no_worse_placed(const SignMotion& now, const SignMotion& alt) {
+  if (alt.max_reach_error_m > now.max_reach_error_m + kWideStepSlackM) return false;
+  if (alt.contact_distance_m.size() != now.contact_distance_m.size()) return false;
+  for (size_t k = 0; k < alt.contact_distance_m.size(); ++k) {
+    const float a = alt.contact_distance_m[k], n = now.contact_distance_m[k];
+    if (a > std::max(n, kHeldOffFarM) + 1e-4f) return false;
+    if (n >= kHeldOffNearM && a < kHeldOffNearM - 1e-4f) return false;
+  }
+  return true;
+}
+void choose_wide_protraction(const SynthContext& ctx, const std::vector<PhraseItem>& items,
+                             std::vector<SignMotion>* motions) {
+  if (!ctx.options.avoid_collisions || ctx.rig.protraction_zone != 0) return;
+  std::unique_ptr<SynthContext> wide[2];
+  float rest_out[2] = {0.0f, 0.0f};  // the rest pose's wrists out to their sides (with `wide`)
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (items[i].kind == PhraseItem::Kind::Pause || (*motions)[i].frame_count == 0) continue;
+    if (!(sign_motion_depth(ctx, (*motions)[i]) > kWideFromM)) continue;
+    if (!wide[0]) {
+      PoseBuilder rest(ctx.rig);
+      rest.set_from_local(ctx.rest_locals.data());
+      for (int side = 0; side < 2; ++side)
+        rest_out[side] = glm::dot(rest.position(ctx.rig.arms[side].hand), side == kLeft ? ctx.rig.left : -ctx.rig.left);
+    }
+    const Neighbours n = neighbours_of(ctx, items, *motions, i);
+    const WithTransitions now =
+        measure_with_transitions(ctx, (*motions)[i], n.before, n.before_exempt, n.after, n.after_exempt, true);
+    SignMotion best;
+    float best_depth = now.depth_m - kWideGainM;
+    for (int zone = 1; zone <= 2; ++zone) {
+      std::unique_ptr<SynthContext>& wctx = wide[zone - 1];
+      if (!wctx) {
+        wctx = std::make_unique<SynthContext>(ctx);
+        wctx->rig.protraction_zone = zone;
+      }
+      SignMotion alt;
+      std::vector<SynthesisError> repeated;
+      if (!synthesize_sign_motion(*wctx, items[i].sign, "", &alt, &repeated, nullptr) || alt.frame_count == 0)
+        continue;
+      if (!no_worse_placed((*motions)[i], alt)) continue;
+      const WithTransitions w =
+          measure_with_transitions(ctx, alt, n.before, n.before_exempt, n.after, n.after_exempt, true);
+      bool out_ok = true;
+      for (int side = 0; side < 2; ++side)
+        out_ok = out_ok && w.wrist_out_m[side] <= std::max(now.wrist_out_m[side] + kWideOutSlackM,
+                                                           rest_out[side] + kWideOutFromRestM);
+      if (w.depth_m < best_depth && w.step_m <= now.step_m + kWideStepSlackM &&
+          w.change_m <= now.change_m + kWideStepSlackM && out_ok) {
+        best_depth = w.depth_m;
+        best = std::move(alt);
+      }
+    }
+    if (best.frame_count > 0) (*motions)[i] = std::move(best);
   }
 }
 
@@ -180,6 +286,7 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
   }
   if (!result.errors.empty()) return result;
   choose_with_transitions(ctx, items, &motions, &usual);
+  choose_wide_protraction(ctx, items, &motions);
 
   Timeline tl;
   tl.joints = J;
