@@ -198,20 +198,24 @@ void choose_with_transitions(const SynthContext& ctx, const std::vector<PhraseIt
 // The shoulder girdle's wider protraction as a per-sign alternative (Rig::protraction_zone,
 // docs/SYNTHESIS.md arm-side). A sign whose own frames leave an arm deeper than kWideFromM in the
 // body is solved once more in each wider zone (arm_ik.cpp kProtractionZones: the girdle
-// protracted for wrists across the body further in front of the shoulder and higher up) and the
-// shallowest alternative kept where the sign with its transitions (built as the phrase builds
-// them) is shallower by kWideGainM and steps no more in a frame, nor changes its step more
-// (kWideStepSlackM); that takes no wrist further out to its side in the transitions
-// (kWideOutSlackM, or beyond kWideOutFromRestM out from the rest pose's wrist, the bound of
-// SynthesisCollision.FarSideRestTransitionsBringTheHandAcrossInFront: a rest transition routed
-// round the body's side instead of across its front); and that leaves a touch no further off its
-// place (kWideStepSlackM) and a hand held off no further out of the 3-10 cm band than it was
-// (the alternative's key pose is placed afresh). Signs within the bound cost nothing: the
-// lexicon's are, on both rigs.
+// protracted for wrists across the body further in front of the shoulder and higher up), and the
+// shallowest alternative is kept where the sign with its transitions (built as the phrase builds
+// them) is shallower by kWideGainM and
+// - steps no more in a frame, nor changes its step more (kWideStepSlackM), or stays within
+//   kWideStepFreeMPerS and kWideChangeFreeMPerS2 (under the 3 m/s and 50 m/s^2 the smoothness
+//   tests hold; at 30 fps 90 and 50 mm a frame, under the corpus census's 100 and 56 mm);
+// - takes no wrist further out to its side in the transitions (kWideOutSlackM), or not beyond
+//   kWideOutFromRestM out from the rest pose's wrist (the bound of SynthesisCollision.
+//   FarSideRestTransitionsBringTheHandAcrossInFront: a rest transition routed round the body's
+//   side instead of across its front);
+// - leaves a touch no further off its place (kWideStepSlackM) and a hand held off no further out
+//   of the 3-10 cm band than it was (the alternative's key pose is placed afresh).
+// Signs within the bound cost nothing: the lexicon's are, on both rigs.
 constexpr float kWideFromM = 0.005f;
 constexpr float kWideGainM = 0.001f;
 constexpr float kWideStepSlackM = 0.002f;
 constexpr float kWideOutSlackM = 0.01f, kWideOutFromRestM = 0.04f;
+constexpr float kWideStepFreeMPerS = 2.7f, kWideChangeFreeMPerS2 = 45.0f;
 constexpr float kHeldOffNearM = 0.03f, kHeldOffFarM = 0.10f;
 bool no_worse_placed(const SignMotion& now, const SignMotion& alt) {
   if (alt.max_reach_error_m > now.max_reach_error_m + kWideStepSlackM) return false;
@@ -259,8 +263,11 @@ void choose_wide_protraction(const SynthContext& ctx, const std::vector<PhraseIt
       for (int side = 0; side < 2; ++side)
         out_ok = out_ok && w.wrist_out_m[side] <= std::max(now.wrist_out_m[side] + kWideOutSlackM,
                                                            rest_out[side] + kWideOutFromRestM);
-      if (w.depth_m < best_depth && w.step_m <= now.step_m + kWideStepSlackM &&
-          w.change_m <= now.change_m + kWideStepSlackM && out_ok) {
+      const float fps = ctx.options.fps;
+      const bool step_ok = w.step_m <= now.step_m + kWideStepSlackM || w.step_m <= kWideStepFreeMPerS / fps;
+      const bool change_ok =
+          w.change_m <= now.change_m + kWideStepSlackM || w.change_m <= kWideChangeFreeMPerS2 / (fps * fps);
+      if (w.depth_m < best_depth && step_ok && change_ok && out_ok) {
         best_depth = w.depth_m;
         best = std::move(alt);
       }
