@@ -91,11 +91,13 @@ namespace {
 // made continuous (options.carry_elbows), then the deepest unintended penetration and the
 // largest wrist or elbow step in one frame.
 // With `sides`, also how far each wrist goes out to its own side in the transitions (from the
-// midline, their widest frame), with the elbow's path carried whatever the options say (as
-// sign_depth_and_step measures a sign, so a choice made on it is the same with and without it).
+// midline, their widest frame) and whether it is across the midline where the sign starts or
+// ends, with the elbow's path carried whatever the options say (as sign_depth_and_step measures
+// a sign, so a choice made on it is the same with and without it).
 struct WithTransitions {
   float depth_m = 0.0f, step_m = 0.0f, change_m = 0.0f;
   float wrist_out_m[2] = {0.0f, 0.0f};
+  bool across[2] = {false, false};  // the wrist past the midline at the sign's first or last frame
 };
 WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMotion& m, const glm::quat* before,
                                          std::uint8_t before_exempt, const glm::quat* after,
@@ -127,11 +129,13 @@ WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMoti
     const int J = ctx.rig.joint_count;
     for (int side = 0; side < 2; ++side) w.wrist_out_m[side] = -1e30f;
     for (int f = 0; f < c.frame_count; ++f) {
-      if (f >= sign_first && f <= sign_last) continue;  // the transitions' own frames
+      const bool sign_end = f == sign_first || f == sign_last;
+      if (f > sign_first && f < sign_last) continue;  // the transitions' own frames and their ends
       pb.set_from_local(&c.rotations[static_cast<size_t>(f) * J]);
       for (int side = 0; side < 2; ++side) {
         const float out = glm::dot(pb.position(ctx.rig.arms[side].hand), side == kLeft ? ctx.rig.left : -ctx.rig.left);
-        w.wrist_out_m[side] = std::max(w.wrist_out_m[side], out);
+        if (sign_end) w.across[side] = w.across[side] || out < 0.0f;
+        else w.wrist_out_m[side] = std::max(w.wrist_out_m[side], out);
       }
     }
   }
@@ -204,10 +208,11 @@ void choose_with_transitions(const SynthContext& ctx, const std::vector<PhraseIt
 // - steps no more in a frame, nor changes its step more (kWideStepSlackM), or stays within
 //   kWideStepFreeMPerS and kWideChangeFreeMPerS2 (under the 3 m/s and 50 m/s^2 the smoothness
 //   tests hold; at 30 fps 90 and 50 mm a frame, under the corpus census's 100 and 56 mm);
-// - takes no wrist further out to its side in the transitions (kWideOutSlackM), or not beyond
-//   kWideOutFromRestM out from the rest pose's wrist (the bound of SynthesisCollision.
-//   FarSideRestTransitionsBringTheHandAcrossInFront: a rest transition routed round the body's
-//   side instead of across its front);
+// - takes no wrist that is across the body where the sign starts or ends further out to its own
+//   side in the transitions (kWideOutSlackM), or not beyond kWideOutFromRestM out from the rest
+//   pose's wrist (the bound of SynthesisCollision.FarSideRestTransitionsBringTheHandAcrossInFront:
+//   a rest transition routed round the body's side instead of across its front; a hand on its
+//   own side may go out, as the hands parted on the way do);
 // - leaves a touch no further off its place (kWideStepSlackM) and a hand held off no further out
 //   of the 3-10 cm band than it was (the alternative's key pose is placed afresh).
 // Signs within the bound cost nothing: the lexicon's are, on both rigs.
@@ -261,8 +266,9 @@ void choose_wide_protraction(const SynthContext& ctx, const std::vector<PhraseIt
           measure_with_transitions(ctx, alt, n.before, n.before_exempt, n.after, n.after_exempt, true);
       bool out_ok = true;
       for (int side = 0; side < 2; ++side)
-        out_ok = out_ok && w.wrist_out_m[side] <= std::max(now.wrist_out_m[side] + kWideOutSlackM,
-                                                           rest_out[side] + kWideOutFromRestM);
+        out_ok = out_ok && (!(now.across[side] || w.across[side]) ||
+                            w.wrist_out_m[side] <= std::max(now.wrist_out_m[side] + kWideOutSlackM,
+                                                            rest_out[side] + kWideOutFromRestM));
       const float fps = ctx.options.fps;
       const bool step_ok = w.step_m <= now.step_m + kWideStepSlackM || w.step_m <= kWideStepFreeMPerS / fps;
       const bool change_ok =
