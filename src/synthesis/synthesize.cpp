@@ -130,7 +130,7 @@ WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMoti
     for (int side = 0; side < 2; ++side) w.wrist_out_m[side] = -1e30f;
     for (int f = 0; f < c.frame_count; ++f) {
       const bool sign_end = f == sign_first || f == sign_last;
-      if (f > sign_first && f < sign_last) continue;  // the transitions' own frames and their ends
+      if (f > sign_first && f < sign_last) continue;  // the transitions, and the sign's two ends
       pb.set_from_local(&c.rotations[static_cast<size_t>(f) * J]);
       for (int side = 0; side < 2; ++side) {
         const float out = glm::dot(pb.position(ctx.rig.arms[side].hand), side == kLeft ? ctx.rig.left : -ctx.rig.left);
