@@ -3014,17 +3014,24 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors, SignMotion* usual_alternative,
                             OtherZeroSolve* other_zero) {
-  if (other_zero) *other_zero = OtherZeroSolve{};
+  if (other_zero) {
+    *other_zero = OtherZeroSolve{};
+    other_zero->protraction_zone = ctx.rig.protraction_zone;
+  }
   if (!synthesize_sign_motion_in_zero(ctx, sign, where, out, errors, usual_alternative)) return false;
   if (ctx.rig.fixed_handed_swivel_zero || !ctx.options.avoid_collisions || out->frame_count == 0) return true;
   float step = 0.0f;
-  sign_depth_and_step(ctx, *out, &step);
+  out->sign_depth_m = sign_depth_and_step(ctx, *out, &step);
   if (!(step > kSwivelChoiceStepM)) return true;
   SynthContext fixed = ctx;
   fixed.rig.fixed_handed_swivel_zero = true;
   bool kept_fixed = false;
   choose_zero(ctx, fixed, sign, where, out, usual_alternative, other_zero, &kept_fixed);
   if (other_zero) other_zero->kept_fixed = kept_fixed;
+  if (kept_fixed) {
+    float fixed_step = 0.0f;
+    out->sign_depth_m = sign_depth_and_step(ctx, *out, &fixed_step);
+  }
   return true;
 }
 
@@ -3032,6 +3039,15 @@ bool synthesize_sign_motion_ramped_again(const SynthContext& ctx, const notation
                                          const std::string& where, SignMotion* out,
                                          std::vector<SynthesisError>* errors, SignMotion* usual_alternative) {
   return synthesize_sign_motion_in_zero(ctx, sign, where, out, errors, usual_alternative, true);
+}
+
+// The solves above measure the kept clip's depth (sign_depth_and_step) and leave it in
+// sign_depth_m; a clip they did not measure (the jam rule's usual alternative, the other zero's
+// solve, the phrase's solves again) is measured here.
+float sign_motion_depth(const SynthContext& ctx, const SignMotion& m) {
+  if (m.sign_depth_m >= 0.0f) return m.sign_depth_m;
+  float step = 0.0f;
+  return m.frame_count > 0 ? sign_depth_and_step(ctx, m, &step) : 0.0f;
 }
 
 namespace {

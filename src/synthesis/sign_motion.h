@@ -52,6 +52,9 @@ struct SignMotion {
   std::vector<float> orientation_error_rad;
   std::vector<std::string> warnings;
   int pushes = 0;                     // frames pushed out of the body
+  // The deepest frame of the sign's own clip as the phrase measures it (after the elbow's path;
+  // sign_motion.cpp sign_depth_and_step), where synthesize_sign_motion measured it; -1: not.
+  float sign_depth_m = -1.0f;
 };
 
 // A sign's clip's largest arm step in one frame (a wrist or elbow; clip_steps.h) over which it
@@ -68,6 +71,10 @@ constexpr float kBranchSignSlackM = 0.0005f;
 struct OtherZeroSolve {
   bool solved = false;
   bool kept_fixed = false;  // solved: the kept clip is the fixed zero's (this one the usual's)
+  // The shoulder girdle's zone the sign was solved in (Rig::protraction_zone: a wider one where
+  // the phrase took the sign's solve in it, synthesize.cpp choose_wide_protraction), so that the
+  // phrase's solves again of the sign are made in it too.
+  int protraction_zone = 0;
   SignMotion motion, usual_alternative;
 };
 
@@ -89,6 +96,10 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
 bool synthesize_sign_motion_ramped_again(const SynthContext& ctx, const notation::SignSpec& sign,
                                          const std::string& where, SignMotion* out,
                                          std::vector<SynthesisError>* errors, SignMotion* usual_alternative);
+
+// A sign's own clip's deepest frame as the phrase measures it (m.sign_depth_m where
+// synthesize_sign_motion measured it, else measured here).
+float sign_motion_depth(const SynthContext& ctx, const SignMotion& m);
 
 // Name of the body anchor for a location (`body/chest/right`, `space/centre`), mirrored when the
 // hand's side is mirrored; empty for places on the other hand.

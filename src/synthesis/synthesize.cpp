@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "face/face_track.h"
 #include "skeleton/humanoid_names.h"
@@ -89,12 +90,18 @@ namespace {
 // frame after; either may be absent), as the phrase's final check measures it: the elbow's path
 // made continuous (carry_elbows), then the deepest unintended penetration and the
 // largest wrist or elbow step in one frame.
+// With `sides`, also how far each wrist goes out to its own side in the transitions (from the
+// midline, their widest frame) and whether it is across the midline where the sign starts or
+// ends (choose_wide_protraction; it measures with carry_elbows, as sign_depth_and_step measures
+// a sign, so a choice made on it is the same with and without the elbow's path).
 struct WithTransitions {
-  float depth_m = 0.0f, step_m = 0.0f;
+  float depth_m = 0.0f, step_m = 0.0f, change_m = 0.0f;
+  float wrist_out_m[2] = {0.0f, 0.0f};
+  bool across[2] = {false, false};  // the wrist past the midline at the sign's first or last frame
 };
 WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMotion& m, const glm::quat* before,
                                          std::uint8_t before_exempt, const glm::quat* after,
-                                         std::uint8_t after_exempt, bool carry_elbows) {
+                                         std::uint8_t after_exempt, bool carry_elbows, bool sides) {
   Timeline seg;
   seg.joints = ctx.rig.joint_count;
   if (before) {
@@ -102,7 +109,9 @@ WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMoti
     TransitionPlan in = plan_transition(ctx, before, m.rotations.data(), before_exempt, m.exempt[0]);
     if (in.k > 1) seg.append(in.frames.data(), in.k - 1, in.exempt.data());
   }
+  const int sign_first = seg.count();
   seg.append(m.rotations.data(), m.frame_count, m.exempt.data());
+  const int sign_last = seg.count() - 1;
   if (after) {
     TransitionPlan out = plan_transition(ctx, seg.last(), after, seg.exempt.back(), after_exempt);
     if (out.k > 1) seg.append(out.frames.data(), out.k - 1, out.exempt.data());
@@ -114,8 +123,25 @@ WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMoti
   c.rotations = std::move(seg.frames);
   if (carry_elbows) continue_elbow_paths(ctx.rig, &ctx.body, c.fps, c.frame_count, &c.rotations);
   WithTransitions w;
+  if (sides) {
+    PoseBuilder pb(ctx.rig);
+    const int J = ctx.rig.joint_count;
+    for (int side = 0; side < 2; ++side) w.wrist_out_m[side] = -1e30f;
+    for (int f = 0; f < c.frame_count; ++f) {
+      const bool sign_end = f == sign_first || f == sign_last;
+      if (f > sign_first && f < sign_last) continue;  // the transitions, and the sign's two ends
+      pb.set_from_local(&c.rotations[static_cast<size_t>(f) * J]);
+      for (int side = 0; side < 2; ++side) {
+        const float out = glm::dot(pb.position(ctx.rig.arms[side].hand), side == kLeft ? ctx.rig.left : -ctx.rig.left);
+        if (sign_end) w.across[side] = w.across[side] || out < 0.0f;
+        else w.wrist_out_m[side] = std::max(w.wrist_out_m[side], out);
+      }
+    }
+  }
   w.depth_m = max_penetration(ctx, c.rotations.data(), c.frame_count, seg.exempt.data(), nullptr, nullptr);
-  w.step_m = measure_frame_steps(ctx.rig, c).step_m;
+  const FrameSteps steps = measure_frame_steps(ctx.rig, c);
+  w.step_m = steps.step_m;
+  w.change_m = steps.change_m;
   return w;
 }
 
@@ -150,10 +176,11 @@ Neighbours neighbours_of(const SynthContext& ctx, const std::vector<PhraseItem>&
 }
 
 // carry_elbows: the elbow's path made continuous as the phrase does it (the options'), or always
-// (the swivel zero's choice, measured as the clip has it by default whatever the options).
+// (the swivel zero's choice and the wider protraction's, measured as the clip has it by default
+// whatever the options).
 WithTransitions measure_with_transitions(const SynthContext& ctx, const SignMotion& m, const Neighbours& n,
-                                         bool carry_elbows) {
-  return measure_with_transitions(ctx, m, n.before, n.before_exempt, n.after, n.after_exempt, carry_elbows);
+                                         bool carry_elbows, bool sides = false) {
+  return measure_with_transitions(ctx, m, n.before, n.before_exempt, n.after, n.after_exempt, carry_elbows, sides);
 }
 
 // The jam rule's clip (sign_motion.h usual_alternative) was chosen on the sign's own frames; the
@@ -209,7 +236,15 @@ bool choose_zero_with_transitions(const SynthContext& ctx, const std::vector<Phr
     if (!(kept.step_m > kSwivelChoiceStepM)) continue;
     OtherZeroSolve& o = (*others)[i];
     const std::string where = "sign " + std::to_string(i + 1) + (items[i].label.empty() ? "" : " '" + items[i].label + "'");
-    SynthContext fixed = ctx;
+    // Both zeros in the shoulder girdle's zone the sign's clip was solved in (a wider one where
+    // choose_wide_protraction took it, so the other zero and the rounds are solved in it too).
+    std::unique_ptr<SynthContext> zoned;
+    if (o.protraction_zone != 0) {
+      zoned = std::make_unique<SynthContext>(ctx);
+      zoned->rig.protraction_zone = o.protraction_zone;
+    }
+    const SynthContext& usual_zero = zoned ? *zoned : ctx;
+    SynthContext fixed = usual_zero;
     fixed.rig.fixed_handed_swivel_zero = true;
     bool in_fixed = o.solved && o.kept_fixed;  // the zero of the kept clip
     if (!o.solved) {
@@ -241,12 +276,103 @@ bool choose_zero_with_transitions(const SynthContext& ctx, const std::vector<Phr
       if (!(best.step_m > kSwivelChoiceStepM)) break;
       SignMotion again, again_usual;
       std::vector<SynthesisError> repeated;
-      if (synthesize_sign_motion_ramped_again(zero_fixed ? fixed : ctx, items[i].sign, where, &again, &repeated,
-                                              &again_usual))
+      if (synthesize_sign_motion_ramped_again(zero_fixed ? fixed : usual_zero, items[i].sign, where, &again,
+                                              &repeated, &again_usual))
         consider(&again, &again_usual);
     }
   }
   return changed;
+}
+
+// The shoulder girdle's wider protraction as a per-sign alternative (Rig::protraction_zone,
+// docs/SYNTHESIS.md arm-side). A sign whose own frames leave an arm deeper than kWideFromM in the
+// body is solved once more in each wider zone (arm_ik.cpp kProtractionZones: the girdle
+// protracted for wrists across the body further in front of the shoulder and higher up), and the
+// shallowest alternative is kept where the sign with its transitions (built as the phrase builds
+// them) is shallower by kWideGainM and
+// - steps no more in a frame, nor changes its step more (kWideStepSlackM), or stays within
+//   kWideStepFreeMPerS and kWideChangeFreeMPerS2 (under the 3 m/s and 50 m/s^2 the smoothness
+//   tests hold; at 30 fps 90 and 50 mm a frame, under the corpus census's 100 and 56 mm);
+// - takes no wrist that is across the body where the sign starts or ends further out to its own
+//   side in the transitions (kWideOutSlackM), or not beyond kWideOutFromRestM out from the rest
+//   pose's wrist (the bound of SynthesisCollision.FarSideRestTransitionsBringTheHandAcrossInFront:
+//   a rest transition routed round the body's side instead of across its front; a hand on its
+//   own side may go out, as the hands parted on the way do);
+// - leaves a touch no further off its place (kWideStepSlackM) and a hand held off no further out
+//   of the 3-10 cm band than it was (the alternative's key pose is placed afresh).
+// Signs within the bound cost nothing: the lexicon's are, on both rigs.
+constexpr float kWideFromM = 0.005f;
+constexpr float kWideGainM = 0.001f;
+constexpr float kWideStepSlackM = 0.002f;
+constexpr float kWideOutSlackM = 0.01f, kWideOutFromRestM = 0.04f;
+constexpr float kWideStepFreeMPerS = 2.7f, kWideChangeFreeMPerS2 = 45.0f;
+constexpr float kHeldOffNearM = 0.03f, kHeldOffFarM = 0.10f;
+bool no_worse_placed(const SignMotion& now, const SignMotion& alt) {
+  if (alt.max_reach_error_m > now.max_reach_error_m + kWideStepSlackM) return false;
+  if (alt.contact_distance_m.size() != now.contact_distance_m.size()) return false;
+  for (size_t k = 0; k < alt.contact_distance_m.size(); ++k) {
+    const float a = alt.contact_distance_m[k], n = now.contact_distance_m[k];
+    if (a > std::max(n, kHeldOffFarM) + 1e-4f) return false;
+    if (n >= kHeldOffNearM && a < kHeldOffNearM - 1e-4f) return false;
+  }
+  return true;
+}
+// A sign taken in a wider zone has its OtherZeroSolve (`others`) replaced by that solve's, so
+// that choose_zero_with_transitions, after it, judges the other zero and the extra rounds in the
+// zone the sign now has.
+void choose_wide_protraction(const SynthContext& ctx, const std::vector<PhraseItem>& items,
+                             std::vector<SignMotion>* motions, std::vector<OtherZeroSolve>* others) {
+  if (!ctx.options.avoid_collisions || ctx.rig.protraction_zone != 0) return;
+  std::unique_ptr<SynthContext> wide[2];
+  float rest_out[2] = {0.0f, 0.0f};  // the rest pose's wrists out to their sides (with `wide`)
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (items[i].kind == PhraseItem::Kind::Pause || (*motions)[i].frame_count == 0) continue;
+    if (!(sign_motion_depth(ctx, (*motions)[i]) > kWideFromM)) continue;
+    if (!wide[0]) {
+      PoseBuilder rest(ctx.rig);
+      rest.set_from_local(ctx.rest_locals.data());
+      for (int side = 0; side < 2; ++side)
+        rest_out[side] = glm::dot(rest.position(ctx.rig.arms[side].hand), side == kLeft ? ctx.rig.left : -ctx.rig.left);
+    }
+    const Neighbours n = neighbours_of(ctx, items, *motions, i);
+    const WithTransitions now = measure_with_transitions(ctx, (*motions)[i], n, true, true);
+    SignMotion best;
+    OtherZeroSolve best_other;
+    float best_depth = now.depth_m - kWideGainM;
+    for (int zone = 1; zone <= 2; ++zone) {
+      std::unique_ptr<SynthContext>& wctx = wide[zone - 1];
+      if (!wctx) {
+        wctx = std::make_unique<SynthContext>(ctx);
+        wctx->rig.protraction_zone = zone;
+      }
+      SignMotion alt;
+      OtherZeroSolve alt_other;
+      std::vector<SynthesisError> repeated;
+      if (!synthesize_sign_motion(*wctx, items[i].sign, "", &alt, &repeated, nullptr, &alt_other) ||
+          alt.frame_count == 0)
+        continue;
+      if (!no_worse_placed((*motions)[i], alt)) continue;
+      const WithTransitions w = measure_with_transitions(ctx, alt, n, true, true);
+      bool out_ok = true;
+      for (int side = 0; side < 2; ++side)
+        out_ok = out_ok && (!(now.across[side] || w.across[side]) ||
+                            w.wrist_out_m[side] <= std::max(now.wrist_out_m[side] + kWideOutSlackM,
+                                                            rest_out[side] + kWideOutFromRestM));
+      const float fps = ctx.options.fps;
+      const bool step_ok = w.step_m <= now.step_m + kWideStepSlackM || w.step_m <= kWideStepFreeMPerS / fps;
+      const bool change_ok =
+          w.change_m <= now.change_m + kWideStepSlackM || w.change_m <= kWideChangeFreeMPerS2 / (fps * fps);
+      if (w.depth_m < best_depth && step_ok && change_ok && out_ok) {
+        best_depth = w.depth_m;
+        best = std::move(alt);
+        best_other = std::move(alt_other);
+      }
+    }
+    if (best.frame_count > 0) {
+      (*motions)[i] = std::move(best);
+      (*others)[i] = std::move(best_other);
+    }
+  }
 }
 
 SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem>& items) {
@@ -266,7 +392,13 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
     synthesize_sign_motion(ctx, items[i].sign, where, &motions[i], &result.errors, &usual[i], &others[i]);
   }
   if (!result.errors.empty()) return result;
+  // Each sign's choices, in this order (docs/SYNTHESIS.md arm-side, merged with leap): the jam
+  // rule's clip judged with the transitions, then a deep sign's wider protraction zones, before
+  // the clip is built; then, where the built clip still leaps, the other swivel zero and the
+  // extra last ramp rounds (choose_zero_with_transitions, below), in the zone the sign then has,
+  // and the clip built again only where they changed a sign.
   choose_with_transitions(ctx, items, &motions, &usual);
+  choose_wide_protraction(ctx, items, &motions, &others);
 
   Timeline tl;
   tl.joints = J;
