@@ -390,9 +390,19 @@ class Reader {
     Location& loc = out->location;
     int finger = -1;
     bool lr_before = false, lr_beside = false;
+    // Inside a sequence of places after hambelowstomach: the corpus writes places on the legs
+    // there with the arm's symbols (rajstopy, pończochy: tights, stockings, "hambelowstomach
+    // [hamupperarm hamlrat]", the thigh; KNEE1A^: "[hamelbowinside]", the hollow of the knee).
+    bool in_sequence = false;
+    char32_t level_code = 0;
     while (i < end) {
       const char32_t c = s_[i].code;
-      if (c >= hamthumb && c <= hampinky) {
+      if (in_sequence && level_code == hambelowstomach &&
+          (c == hamupperarm || c == hamelbow || c == hamelbowinside || c == hamlowerarm)) {
+        // A place on the leg, not a part of this hand (as a part, the hand put its own upper arm
+        // at the belly: rajstopy's wrist leapt 466 mm about it, docs/SYNTHESIS.md leap). The body
+        // model has no legs: the level below the stomach stands for it.
+      } else if (c >= hamthumb && c <= hampinky) {
         if (finger < 0) finger = static_cast<int>(c - hamthumb);
         out->has_place = true;
         loc.hand_place = HandPlace::Fingertip;  // a finger alone: its tip
@@ -411,6 +421,7 @@ class Reader {
       } else if (is_body_level(c) || c == hamneutralspace) {
         if (out->has_level) break;  // a second level starts a new location (a target)
         out->has_level = true;
+        level_code = c;
         loc.level = c == hamneutralspace ? BodyLevel::NeutralSpace : level_of(c);
         if (lr_before) loc.side = lr_beside ? Side::LeftBeside : Side::Left;
       } else if (in_group(c, HamGroup::Contact)) {
@@ -444,6 +455,7 @@ class Reader {
         break;
       } else if ((c == hamseqbegin && i + 1 < end && is_location_start(s_[i + 1].code)) || c == hamseqend) {
         // A sequence of places inside a location (contact along the way): read through.
+        in_sequence = c == hamseqbegin;
       } else {
         break;
       }

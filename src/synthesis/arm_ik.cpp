@@ -88,6 +88,21 @@ const ChainBind& chain_bind(const Rig& rig, Side side) {
   return b;
 }
 
+// Where the shoulder girdle protracts for a wrist across the body (solve_chain), by
+// Rig::protraction_zone: from `medial_from` of the arm's reach medial of the shoulder joint,
+// rising by `slope` per reach (to the limit), full up to `front_to` - `front_fade` of the reach in
+// front of the shoulder and none from `front_to`, full up to `above_to` - 0.3 above it and none
+// from `above_to`. Zone 0 is the usual one (every solve); 1 and 2 the per-sign alternatives
+// synthesize.cpp choose_wide_protraction tries where a sign's own frames leave an arm in the body
+// (docs/SYNTHESIS.md arm-side): 1 reaches wrists far in front and up to the face, 2 also those
+// less far across, with a gentler onset.
+struct ProtractionZone {
+  float medial_from, slope, front_to, front_fade, above_to;
+};
+const ProtractionZone kProtractionZones[3] = {{0.52f, 8.0f, 0.27f, 0.09f, 0.1f},
+                                              {0.52f, 8.0f, 0.6f, 0.25f, 0.4f},
+                                              {0.40f, 4.0f, 0.6f, 0.25f, 0.4f}};
+
 // `bind` is chain_bind(rig, side) and cos_swivel, sin_swivel the swivel's cosine and sine: the
 // caller (solve_at) looks them up once for its rounds, which all solve at the same swivel.
 Chain solve_chain(const Rig& rig, const ChainBind& bind, const glm::vec3& wrist_target, float cos_swivel,
@@ -118,9 +133,10 @@ Chain solve_chain(const Rig& rig, const ChainBind& bind, const glm::vec3& wrist_
     // 27%) and not above the shoulder (full from 20% below it, none from 10% above): a hand far
     // in front, at the face or over the head crosses with the arm alone.
     const float medial = glm::dot(v, -out_dir) / (l1 + l2);
-    const float near_body = clampf((0.27f - glm::dot(v, rig.forward) / (l1 + l2)) / 0.09f, 0.0f, 1.0f);
-    const float not_above = clampf((0.1f - height) / 0.3f, 0.0f, 1.0f);
-    const float across = 8.0f * (medial - 0.52f) * near_body * not_above;
+    const ProtractionZone& z = kProtractionZones[rig.protraction_zone];  // 0, 1 or 2 (rig.h)
+    const float near_body = clampf((z.front_to - glm::dot(v, rig.forward) / (l1 + l2)) / z.front_fade, 0.0f, 1.0f);
+    const float not_above = clampf((z.above_to - height) / 0.3f, 0.0f, 1.0f);
+    const float across = z.slope * (medial - z.medial_from) * near_body * not_above;
     c.protraction = clampf(std::max(1.2f * (reach - 0.75f) * fwd, across), 0.0f, lim.clavicle_protraction);
     c.shoulder = axis_angle(bind.prot_axis, c.protraction) * axis_angle(bind.elev_axis, c.elevation);
     shoulder_pos = pivot + c.shoulder * (s0 - pivot);
@@ -748,7 +764,8 @@ struct ArmSolveMemo::Table {
                                 (t.start_at_previous_wrist ? 1u << 12 : 0u) |
                                 // A solve in one swivel zero is never answered with the other's
                                 // (docs/SYNTHESIS.md swivel-choice), whatever the rig's address.
-                                (rig.fixed_handed_swivel_zero ? 1u << 13 : 0u);
+                                (rig.fixed_handed_swivel_zero ? 1u << 13 : 0u) |
+                                (static_cast<std::uint32_t>(rig.protraction_zone & 3) << 14);
     w.put(&rig_ptr, sizeof rig_ptr);
     w.put(&body, sizeof body);
     w.put(&flags, sizeof flags);
@@ -767,7 +784,8 @@ struct ArmSolveMemo::Table {
     KeyWriter w{reinterpret_cast<unsigned char*>(k.data())};
     const Rig* rig_ptr = &rig;
     // The side, and the swivel zero the chain is solved in (as key_of's flags).
-    const std::uint32_t s = static_cast<std::uint32_t>(side) | (rig.fixed_handed_swivel_zero ? 1u << 13 : 0u);
+    const std::uint32_t s = static_cast<std::uint32_t>(side) | (rig.fixed_handed_swivel_zero ? 1u << 13 : 0u) |
+                            (static_cast<std::uint32_t>(rig.protraction_zone & 3) << 14);
     w.put(&rig_ptr, sizeof rig_ptr);
     w.put(&s, sizeof s);
     w.put(&t.point, sizeof t.point);

@@ -121,7 +121,7 @@ void turn_arm(const Rig& rig, const ArmRig& arm, const glm::quat& turn, const Po
 // per-frame step against 3 m/s and its largest change of step against 50 m/s^2 (the smoothness
 // tests' 100 mm and 56 mm at 30 fps), 1 on a bound.
 float elbow_roughness(const Rig& rig, Side side, float fps, int frame_count,
-                      const std::vector<glm::quat>& rotations) {
+                      const std::vector<glm::quat>& rotations, float* largest_step_m = nullptr) {
   SubsetPose pb(rig, {rig.arms[side].lower});  // the elbow's position only
   float step = 0.0f, change = 0.0f;
   glm::vec3 previous{0.0f}, previous_step{0.0f};
@@ -136,6 +136,7 @@ float elbow_roughness(const Rig& rig, Side side, float fps, int frame_count,
     }
     previous = elbow;
   }
+  if (largest_step_m) *largest_step_m = step;
   return std::max(step * fps / kStepBoundMPerS, change * fps * fps / kChangeBoundMPerS2);
 }
 
@@ -346,7 +347,8 @@ bool within_depths(const ArmDepths& trial, const ArmDepths& written) {
 }  // namespace
 
 int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int frame_count,
-                         std::vector<glm::quat>* rotations) {
+                         std::vector<glm::quat>* rotations, float* largest_arm_step_m) {
+  if (largest_arm_step_m) *largest_arm_step_m = 0.0f;
   if (frame_count < 2 || fps <= 0.0f) return 0;
   // One pass to find the arms whose elbow swings faster than the trigger at all (most clips have
   // none, and are left as they are at the cost of posing the arms' joints once per frame). It
@@ -354,17 +356,28 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
   // posed (SubsetPose, the full pose's positions to the bit), not the fingers, legs and head (the
   // lexicon, each sign from rest and back: the pass 88.8 -> 18.8 M instructions, of 1.66 G).
   bool swings[2] = {false, false};
+  // Each arm's largest wrist and elbow step, squared (largest_arm_step_m). A carried swing turns the arm
+  // about the line through the shoulder joint and the wrist, so the wrists' steps stay these; a
+  // carried elbow's are its kept variant's (elbow_roughness measures them).
+  float wrist_step[2] = {0.0f, 0.0f}, elbow_step[2] = {0.0f, 0.0f};
   {
     SubsetPose pb(rig, {rig.arms[kLeft].upper, rig.arms[kLeft].lower, rig.arms[kLeft].hand,
                         rig.arms[kRight].upper, rig.arms[kRight].lower, rig.arms[kRight].hand});
-    glm::vec3 previous[2];
+    glm::vec3 previous[2], previous_wrist[2];
     const float trigger_m = kSwingTriggerMPerS / fps;
     for (int f = 0; f < frame_count; ++f) {
       pb.set_from_local(&(*rotations)[static_cast<size_t>(f) * rig.joint_count]);
       for (Side s : {kLeft, kRight}) {
         const ArmRig& arm = rig.arms[s];
         const glm::vec3 shoulder = pb.position(arm.upper), elbow = pb.position(arm.lower);
-        const glm::vec3 line = pb.position(arm.hand) - shoulder;
+        const glm::vec3 wrist = pb.position(arm.hand);
+        const glm::vec3 line = wrist - shoulder;
+        if (largest_arm_step_m && f > 0) {  // squared here, the root taken once at the end
+          const glm::vec3 de = elbow - previous[s], dw = wrist - previous_wrist[s];
+          elbow_step[s] = std::max(elbow_step[s], glm::dot(de, de));
+          wrist_step[s] = std::max(wrist_step[s], glm::dot(dw, dw));
+        }
+        previous_wrist[s] = wrist;
         if (f > 0 && glm::length(line) > 1e-4f) {
           const glm::vec3 axis = glm::normalize(line);
           const glm::vec3 own = reject(elbow - shoulder, axis),
@@ -395,6 +408,7 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
     std::vector<glm::quat> best;
     int best_changed = 0;
     float best_roughness = elbow_roughness(rig, s, fps, frame_count, *rotations);
+    float best_step = elbow_step[s];  // squared
     for (int variant = 0; variant < 6; ++variant) {
       const bool by_body = variant % 2 == 0;
       if (!body && by_body) continue;
@@ -408,19 +422,24 @@ int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int f
                                          : continue_arm_path(rig, route, s, fps, frame_count, true,
                                                              own_wrist_bend, &trial, &count);
       if (!arrived || count == 0) continue;
-      const float roughness = elbow_roughness(rig, s, fps, frame_count, trial);
+      float trial_step = 0.0f;
+      const float roughness = elbow_roughness(rig, s, fps, frame_count, trial, &trial_step);
       if (roughness >= best_roughness - 1e-3f) continue;
       if (largest_wrist_bend(rig, s, frame_count, trial) > allowed_wrist_bend) continue;
       if (body && !within_depths(deepest_arm(rig, *body, s, frame_count, trial), written_depths))
         continue;
       best_roughness = roughness;
+      best_step = trial_step * trial_step;
       best.swap(trial);
       best_changed = count;
     }
     if (best_changed == 0) continue;
     rotations->swap(best);
     changed += best_changed;
+    elbow_step[s] = best_step;
   }
+  if (largest_arm_step_m)
+    *largest_arm_step_m = std::sqrt(std::max({wrist_step[0], wrist_step[1], elbow_step[0], elbow_step[1]}));
   return changed;
 }
 

@@ -29,7 +29,10 @@ namespace sw::synthesis {
 // Frame-major local rotations (rig.joint_count per frame, a Clip's layout), sampled at fps.
 // With a body model, a swing that starts picks the way round the circle that keeps the arm
 // shallower in the trunk. Returns the number of frames whose arm it changed (both arms counted).
+// `largest_arm_step_m` (optional): the largest step of a wrist or elbow in one frame over the
+// frames as the pass leaves them (clip_steps.h measure_frame_steps' arm measure), read from the
+// positions the pass poses anyway (a clip that no elbow swings in is not posed again).
 int continue_elbow_paths(const Rig& rig, const BodyModel* body, float fps, int frame_count,
-                         std::vector<glm::quat>* rotations);
+                         std::vector<glm::quat>* rotations, float* largest_arm_step_m = nullptr);
 
 }  // namespace sw::synthesis

@@ -60,6 +60,12 @@ struct Rig {
   // synthesize_sign_motion tries where the usual zero's clip leaps (docs/SYNTHESIS.md
   // swivel-choice). Not a property of the body: set on a copy of the context for that solve.
   bool fixed_handed_swivel_zero = false;
+  // Where the shoulder girdle protracts for a wrist across the body (arm_ik.cpp solve_chain,
+  // kProtractionZones): 0, the usual zone (wrists up to 27% of the reach in front of the shoulder,
+  // not above it); 1 and 2, wider ones, the per-sign alternatives run_phrase tries where a sign's
+  // own frames put an arm in the body (docs/SYNTHESIS.md arm-side). Not a property of the body:
+  // set on a copy of the context for that solve.
+  int protraction_zone = 0;
   // Bind-pose terms the pose builders read for every joint they pose (PoseBuilder::
   // set_from_local and finalize, SubsetPose), worked out once per rig instead of per joint per
   // call (docs/SYNTHESIS.md speed-exact): bind_offset[j] = bind_pos[j] - bind_pos[parent] with w 0

@@ -158,9 +158,6 @@ constexpr float kStepHandPeakSpeedMPerS = 2.7f;
 // factor): up to this many stretches, each taken only when it measures better (PLEASE on the
 // reference at 60 fps x 1.25: 65.0, 45.5, then 50.2 m/s^2 at one more state).
 constexpr int kStepAccelRounds = 3;
-// How much deeper a sign solved with its continued frames' branches chosen (synthesize_sign_motion)
-// may go than the usual solve and still be kept: 0.5 mm, as for one frame's choice.
-constexpr float kBranchSignSlackM = 0.0005f;
 
 HandState mix_state(const HandState& a, const HandState& b, float s) {
   HandState o;
@@ -1696,12 +1693,13 @@ struct StepSpan {
 // previous wrist too, and that kept where it is no deeper and nearer (solve_frames);
 // `continued_frames` (optional) receives how many hand-frames continue a flip.
 // `usual_alternative` (optional): where the jam rule's clip was kept, the clip without the rule
-// (finished alike); otherwise an empty SignMotion.
+// (finished alike); otherwise an empty SignMotion. extra_ramp_rounds: more last ramp rounds where
+// the last one's corrections leap (ramp_rounds; synthesize_sign_motion_ramped_again asks).
 bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignSpec& sign,
                                   const std::string& where, const std::vector<int>& step_states,
                                   bool choose_branch, SignMotion* result, std::vector<SynthesisError>* errors,
                                   std::vector<StepSpan>* spans, int* continued_frames,
-                                  SignMotion* usual_alternative) {
+                                  SignMotion* usual_alternative, bool extra_ramp_rounds = false) {
   const Rig& rig = ctx.rig;
   const float fps = ctx.options.fps, speed = ctx.options.speed;
   Solver solver(ctx, errors, where);
@@ -2750,10 +2748,17 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // third (a third round correcting at 2 mm like the others: also 18, but HOSPITAL's small
   // last fixes came on at once, 34 -> 14 m/s^2 with the net; a fourth round: 19).
   constexpr int kRampRounds = 3;
+  // Last rounds more where the last one's corrections leap (ramp_rounds below), and what counts
+  // as a jump between neighbouring frames' corrections.
+  constexpr int kExtraRampRounds = 3;
+  constexpr float kResidualJumpRad = 0.5f;
+  constexpr float kResidualJumpM = 0.1f;
   // The ramp rounds, from the first solve's corrections (run once, or once per swivel side a run
   // of fixes is tried with: choose_run_sides_and_ramp below).
-  auto ramp_rounds = [&]() {
-  for (int round = 0; round < kRampRounds; ++round) {
+  // One ramp round: the corrections so far ramped into the frames and the frames they reach
+  // solved again, `last` correcting again only what is deep. False where there was nothing to
+  // ramp (the rounds end).
+  auto ramp_round = [&](bool last) {
   bool any_turn = false, any_swivel = false;
   for (const auto& ft : turns)
     for (const auto& q : ft) any_turn = any_turn || rotation_angle(q) > 1e-3f;
@@ -2803,11 +2808,11 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         if (rotation_angle(ramped[f]) > 0.0f) redo[f] = 1;
       }
     }
-    ramp_only = round + 1 == kRampRounds;
+    ramp_only = last;
     solve_frames(&redo);
     ramp_only = false;
   }
-  if (!(any_turn || any_swivel || any_push)) break;
+  if (!(any_turn || any_swivel || any_push)) return false;
   // Frames the round did not solve again had no correction; the ones it did now hold only the
   // residual corrections of this solve (the ramped ones are in their targets).
   for (int f = 0; f < out->frame_count; ++f)
@@ -2817,7 +2822,70 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
         swivel_fixes[f][i] = 0.0f;
         push_offsets[f][i] = glm::vec3(0.0f);
       }
-  }
+  return true;
+  };
+  // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
+  // largest wrist or elbow step in one frame.
+  struct Score {
+    float depth_m, step_m;
+  };
+  auto score = [&]() {
+    Clip c;
+    c.fps = fps;
+    c.frame_count = out->frame_count;
+    c.rotations = out->rotations;
+    return Score{max_penetration(ctx, out->rotations.data(), c.frame_count, out->exempt.data(), nullptr, nullptr),
+                 measure_frame_steps(rig, c).step_m};
+  };
+  // Whether the last round's own corrections (applied at once: nothing ramps them) can make a
+  // leap: one that differs from a neighbouring frame's by more than kResidualJumpRad of swivel
+  // or hand turn, or kResidualJumpM of push (at the avatar's arm, 0.5 rad swings the elbow some
+  // 13 cm). Counted on the corrections, no posing: most clips have none.
+  auto residual_jumps = [&]() {
+    const int n = out->frame_count;
+    for (int f = 0; f < n; ++f)
+      for (int i = 0; i < 2; ++i)
+        for (int g : {f - 1, f + 1}) {
+          if (g < 0 || g >= n) continue;
+          if (std::abs(swivel_fixes[f][i] - swivel_fixes[g][i]) > kResidualJumpRad ||
+              rotation_angle(glm::conjugate(turns[g][i]) * turns[f][i]) > kResidualJumpRad ||
+              glm::length(push_offsets[f][i] - push_offsets[g][i]) > kResidualJumpM)
+            return true;
+        }
+    return false;
+  };
+  // The clip as it will be kept (the thorax turn applied, the elbow's path made continuous, as
+  // sign_depth_and_step measures a finished sign): its deepest frame and largest arm step.
+  auto carried_score = [&]() {
+    std::vector<glm::quat> c = out->rotations;
+    if (solver.turn.active())
+      for (int f = 0; f < out->frame_count; ++f) apply_thorax_turn(rig, solver.turn, &c[static_cast<size_t>(f) * J]);
+    Score sc{0.0f, 0.0f};
+    continue_elbow_paths(rig, &ctx.body, fps, out->frame_count, &c, &sc.step_m);
+    sc.depth_m = max_penetration(ctx, c.data(), out->frame_count, out->exempt.data(), nullptr, nullptr);
+    return sc;
+  };
+  auto ramp_rounds = [&]() {
+    for (int round = 0; round < kRampRounds; ++round)
+      if (!ramp_round(round + 1 == kRampRounds)) return;
+    // The last round's corrections come on at once (TO-BEAT9^: its left elbow raised over the
+    // shoulder, a -1.0 rad swivel fix at one frame against none at the one before, the elbow
+    // 257 mm in a frame). Where they jump and the clip leaps (an arm step over
+    // kSwivelChoiceStepM), more last rounds ramp them in, each kept only where the clip (as it
+    // will be kept: carried_score) is no deeper (kBranchSignSlackM) and steps less
+    // (docs/SYNTHESIS.md leap). Only where the phrase asks (synthesize_sign_motion_ramped_again).
+    for (int extra = 0; extra_ramp_rounds && extra < kExtraRampRounds && ctx.options.avoid_collisions; ++extra) {
+      if (!residual_jumps()) return;
+      const Score before = carried_score();
+      if (!(before.step_m > kSwivelChoiceStepM)) return;
+      ClipSolveState kept = st;
+      if (!ramp_round(true)) return;
+      const Score after = carried_score();
+      if (!(after.depth_m <= before.depth_m + kBranchSignSlackM && after.step_m < before.step_m)) {
+        st = std::move(kept);
+        return;
+      }
+    }
   };
   // One side per run of swivel fixes. Where no swivel offset clears an arm, the first solve's
   // fix is the largest gain, and its side can flip between neighbouring frames (the corpus's
@@ -2833,19 +2901,6 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   // smaller. Scored after the ramps: the depth a forced side leaves frame by frame foretold the
   // ramped clip's badly (a side at most 1 mm deeper at any frame before the ramps sank 6 corpus
   // signs by over 2 mm after them). Runs whose fixes share a side, most, cost nothing.
-  // The ramped clip's depth (the arms and hands, as the clip's check measures them) and its
-  // largest wrist or elbow step in one frame.
-  struct Score {
-    float depth_m, step_m;
-  };
-  auto score = [&]() {
-    Clip c;
-    c.fps = fps;
-    c.frame_count = out->frame_count;
-    c.rotations = out->rotations;
-    return Score{max_penetration(ctx, out->rotations.data(), c.frame_count, out->exempt.data(), nullptr, nullptr),
-                 measure_frame_steps(rig, c).step_m};
-  };
   auto choose_run_sides_and_ramp = [&]() {
     const int n = out->frame_count;
     struct SideRun {
@@ -3029,16 +3084,13 @@ bool sign_second_is_better(const SynthContext& ctx, const SignMotion& first, con
   return second_depth <= depth + kBranchSignSlackM && second_step < step;
 }
 
-// A sign's clip's largest arm step over which it is solved again in the swivel zero of fixed
-// handedness (docs/SYNTHESIS.md swivel-choice): no signer's elbow moves 15 cm in a frame (at 30
-// fps, 4.5 m/s); the lexicon's largest step is 68 mm, so it is never solved twice; main's
-// HamNoSys corpus has 52 signs over it, among them the usual zero's half turns at the shoulder
-// joint's coronal plane (szkoła 464 mm, TO-SLEEP2^ 553 mm: elbow-leap).
-constexpr float kSwivelChoiceStepM = 0.15f;
-
 bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::SignSpec& sign,
                                     const std::string& where, SignMotion* out,
-                                    std::vector<SynthesisError>* errors, SignMotion* usual_alternative);
+                                    std::vector<SynthesisError>* errors, SignMotion* usual_alternative,
+                                    bool extra_ramp_rounds = false);
+void choose_zero(const SynthContext& ctx, const SynthContext& fixed, const notation::SignSpec& sign,
+                 const std::string& where, SignMotion* out, SignMotion* usual_alternative,
+                 OtherZeroSolve* other_zero, bool* kept_fixed);
 
 }  // namespace
 
@@ -3051,29 +3103,31 @@ bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::Sig
 // deeper by > 2 mm), so each sign keeps the zero that serves it. The clips without the jam rule
 // (`usual_alternative`) are chosen between by the same rule on their own, as in the branch
 // choice. The alternative's errors repeat the first solve's (the same sign and key pose).
+// The threshold (sign_motion.h kSwivelChoiceStepM): main's HamNoSys corpus had 52 signs over it
+// before the choice, among them the usual zero's half turns at the shoulder joint's coronal plane
+// (szkoła 464 mm, TO-SLEEP2^ 553 mm: elbow-leap); the lexicon is never solved twice.
 static bool synthesize_sign_motion_in_chosen_zero(const SynthContext& ctx, const notation::SignSpec& sign,
                                                   const std::string& where, SignMotion* out,
                                                   std::vector<SynthesisError>* errors,
-                                                  SignMotion* usual_alternative) {
+                                                  SignMotion* usual_alternative, OtherZeroSolve* other_zero) {
+  if (other_zero) {
+    *other_zero = OtherZeroSolve{};
+    other_zero->protraction_zone = ctx.rig.protraction_zone;
+  }
   if (!synthesize_sign_motion_in_zero(ctx, sign, where, out, errors, usual_alternative)) return false;
   if (ctx.rig.fixed_handed_swivel_zero || !ctx.options.avoid_collisions || out->frame_count == 0) return true;
   float step = 0.0f;
-  sign_depth_and_step(ctx, *out, &step);
+  out->sign_depth_m = sign_depth_and_step(ctx, *out, &step);
   if (!(step > kSwivelChoiceStepM)) return true;
   SynthContext fixed = ctx;
   fixed.rig.fixed_handed_swivel_zero = true;
-  SignMotion other, other_alternative;
-  std::vector<SynthesisError> repeated;
-  if (!synthesize_sign_motion_in_zero(fixed, sign, where, &other, &repeated,
-                                      usual_alternative ? &other_alternative : nullptr))
-    return true;
-  if (usual_alternative && (usual_alternative->frame_count > 0 || other_alternative.frame_count > 0)) {
-    const SignMotion& first = usual_alternative->frame_count > 0 ? *usual_alternative : *out;
-    const SignMotion& second = other_alternative.frame_count > 0 ? other_alternative : other;
-    SignMotion kept = sign_second_is_better(ctx, first, second) ? second : first;
-    *usual_alternative = std::move(kept);
+  bool kept_fixed = false;
+  choose_zero(ctx, fixed, sign, where, out, usual_alternative, other_zero, &kept_fixed);
+  if (other_zero) other_zero->kept_fixed = kept_fixed;
+  if (kept_fixed) {
+    float fixed_step = 0.0f;
+    out->sign_depth_m = sign_depth_and_step(ctx, *out, &fixed_step);
   }
-  if (sign_second_is_better(ctx, *out, other)) *out = std::move(other);
   return true;
 }
 
@@ -3087,18 +3141,22 @@ static bool synthesize_sign_motion_in_chosen_zero(const SynthContext& ctx, const
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors, SignMotion* usual_alternative,
-                            EscapeAlternative* escape) {
+                            OtherZeroSolve* other_zero, EscapeAlternative* escape) {
   if (escape) *escape = EscapeAlternative{};
-  if (!synthesize_sign_motion_in_chosen_zero(ctx, sign, where, out, errors, usual_alternative)) return false;
+  if (!synthesize_sign_motion_in_chosen_zero(ctx, sign, where, out, errors, usual_alternative, other_zero))
+    return false;
   if (!out->mirror_laid_apart || !ctx.mirror_pairs_apart || !ctx.options.avoid_collisions) return true;
   SynthContext escape_ctx = ctx;
   escape_ctx.mirror_pairs_apart = false;
   SignMotion other, other_alternative;
   std::vector<SynthesisError> repeated;
+  OtherZeroSolve other_zero_of_escape;
   if (!synthesize_sign_motion_in_chosen_zero(escape_ctx, sign, where, &other, &repeated,
-                                             usual_alternative ? &other_alternative : nullptr))
+                                             usual_alternative ? &other_alternative : nullptr,
+                                             other_zero ? &other_zero_of_escape : nullptr))
     return true;
   if (escape) {
+    escape->other_zero = std::move(other_zero_of_escape);
     escape->clip = std::move(other);
     escape->usual = std::move(other_alternative);
     return true;
@@ -3109,22 +3167,71 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   if (!mirror_apart_is_kept(depth, step, other_depth, other_step)) {
     *out = std::move(other);
     if (usual_alternative) *usual_alternative = std::move(other_alternative);
+    if (other_zero) *other_zero = std::move(other_zero_of_escape);
   }
   return true;
 }
 
+bool synthesize_sign_motion_ramped_again(const SynthContext& ctx, const notation::SignSpec& sign,
+                                         const std::string& where, SignMotion* out,
+                                         std::vector<SynthesisError>* errors, SignMotion* usual_alternative) {
+  return synthesize_sign_motion_in_zero(ctx, sign, where, out, errors, usual_alternative, true);
+}
+
+// The solves above measure the kept clip's depth (sign_depth_and_step) and leave it in
+// sign_depth_m; a clip they did not measure (the jam rule's usual alternative, the other zero's
+// solve, the phrase's solves again) is measured here.
+float sign_motion_depth(const SynthContext& ctx, const SignMotion& m) {
+  if (m.sign_depth_m >= 0.0f) return m.sign_depth_m;
+  float step = 0.0f;
+  return m.frame_count > 0 ? sign_depth_and_step(ctx, m, &step) : 0.0f;
+}
+
 namespace {
+
+// The zero choice of synthesize_sign_motion: the sign solved in the fixed zero and kept by the
+// branch choice's rule (`kept_fixed`), the zero not kept into `other_zero`.
+void choose_zero(const SynthContext& ctx, const SynthContext& fixed, const notation::SignSpec& sign,
+                 const std::string& where, SignMotion* out, SignMotion* usual_alternative,
+                 OtherZeroSolve* other_zero, bool* kept_fixed) {
+  SignMotion other, other_alternative;
+  std::vector<SynthesisError> repeated;
+  if (!synthesize_sign_motion_in_zero(fixed, sign, where, &other, &repeated,
+                                      usual_alternative ? &other_alternative : nullptr))
+    return;
+  // Each zero's own clip without the jam rule, before the two are chosen between below.
+  SignMotion first_alternative = usual_alternative ? *usual_alternative : SignMotion{};
+  if (usual_alternative && (usual_alternative->frame_count > 0 || other_alternative.frame_count > 0)) {
+    const SignMotion& first = usual_alternative->frame_count > 0 ? *usual_alternative : *out;
+    const SignMotion& second = other_alternative.frame_count > 0 ? other_alternative : other;
+    SignMotion kept = sign_second_is_better(ctx, first, second) ? second : first;
+    *usual_alternative = std::move(kept);
+  }
+  if (sign_second_is_better(ctx, *out, other)) {
+    if (other_zero) {
+      other_zero->motion = std::move(*out);
+      other_zero->usual_alternative = std::move(first_alternative);
+    }
+    *out = std::move(other);
+    *kept_fixed = true;
+  } else if (other_zero) {
+    other_zero->motion = std::move(other);
+    other_zero->usual_alternative = std::move(other_alternative);
+  }
+  if (other_zero) other_zero->solved = true;
+}
 
 bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::SignSpec& sign,
                                     const std::string& where, SignMotion* out,
-                                    std::vector<SynthesisError>* errors, SignMotion* usual_alternative) {
+                                    std::vector<SynthesisError>* errors, SignMotion* usual_alternative,
+                                    bool extra_ramp_rounds) {
   // The sign's arm solves asked again with the same target are answered from memory (arm_ik.h;
   // the clip is the same to the bit), also in the second solve at a stretched timing below.
   ArmSolveMemo arm_solves;
   std::vector<StepSpan> spans;
   int continued_frames = 0;
   if (!synthesize_sign_motion_timed(ctx, sign, where, {}, false, out, errors, &spans, &continued_frames,
-                                    usual_alternative))
+                                    usual_alternative, extra_ramp_rounds))
     return false;
   // A sign with frames that continue a wrist flip is solved once more with each such frame's
   // branch chosen on the finished frame (solve_frames: the usual start or the previous wrist's).
@@ -3141,7 +3248,7 @@ bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::Sig
     std::vector<StepSpan> chosen_spans;
     SignMotion chosen_alternative;
     if (synthesize_sign_motion_timed(ctx, sign, where, {}, true, &chosen, &repeated, &chosen_spans, nullptr,
-                                     usual_alternative ? &chosen_alternative : nullptr) &&
+                                     usual_alternative ? &chosen_alternative : nullptr, extra_ramp_rounds) &&
         chosen_spans.size() == spans.size()) {
       // Measured as the clip has them by default, after the elbow's path (sign_depth_and_step).
       auto second_is_better = [&](const SignMotion& first, const SignMotion& second) {
@@ -3199,7 +3306,7 @@ bool synthesize_sign_motion_in_zero(const SynthContext& ctx, const notation::Sig
     std::vector<StepSpan> again;
     SignMotion slower_alternative;
     if (!synthesize_sign_motion_timed(ctx, sign, where, states, choose_branch, &slower, &repeated, &again, nullptr,
-                                      usual_alternative ? &slower_alternative : nullptr) ||
+                                      usual_alternative ? &slower_alternative : nullptr, extra_ramp_rounds) ||
         again.size() != spans.size())
       return true;
     // Not exactly 1/duration^2 (above): a stretch that measures no better is not taken.

@@ -58,6 +58,30 @@ struct SignMotion {
   std::vector<std::string> warnings;
   int pushes = 0;                     // frames pushed out of the body
   bool mirror_laid_apart = false;     // the key pose's mirror pair was laid apart to both sides
+  // The deepest frame of the sign's own clip as the phrase measures it (after the elbow's path;
+  // sign_motion.cpp sign_depth_and_step), where synthesize_sign_motion measured it; -1: not.
+  float sign_depth_m = -1.0f;
+};
+
+// A sign's clip's largest arm step in one frame (a wrist or elbow; clip_steps.h) over which it
+// is solved again in the other swivel zero (docs/SYNTHESIS.md swivel-choice, leap): no signer's
+// elbow moves 15 cm in a frame (at 30 fps, 4.5 m/s); the lexicon's largest step is 68 mm.
+constexpr float kSwivelChoiceStepM = 0.15f;
+// How much deeper a sign's second solve (the other branch of its continued wrist flips, the other
+// swivel zero) may go than the first and still be kept: 0.5 mm, as for one frame's choice.
+constexpr float kBranchSignSlackM = 0.0005f;
+
+// The sign solved in the swivel zero synthesize_sign_motion did not keep, with its clip without
+// the jam rule (as `usual_alternative` below), for the phrase to judge with the transitions
+// (synthesize.cpp). `solved` false: the sign was solved in one zero only.
+struct OtherZeroSolve {
+  bool solved = false;
+  bool kept_fixed = false;  // solved: the kept clip is the fixed zero's (this one the usual's)
+  // The shoulder girdle's zone the sign was solved in (Rig::protraction_zone: a wider one where
+  // the phrase took the sign's solve in it, synthesize.cpp choose_wide_protraction), so that the
+  // phrase's solves again of the sign are made in it too.
+  int protraction_zone = 0;
+  SignMotion motion, usual_alternative;
 };
 
 // Synthesises one sign's frames (no transitions in or out). `where` prefixes error locations.
@@ -70,6 +94,7 @@ struct SignMotion {
 // transitions; otherwise left empty. Without `escape` the two are judged on the sign's frames.
 struct EscapeAlternative {
   SignMotion clip, usual;
+  OtherZeroSolve other_zero;  // the escape's solve in the other swivel zero (as `other_zero` below)
 };
 // Whether the laid-apart clip (its deepest frame and largest wrist or elbow step in one frame) is
 // kept over the escape's: no deeper (0.1 mm, rounding), and stepping no more in a frame, or at most
@@ -86,10 +111,24 @@ inline bool mirror_apart_is_kept(float apart_depth_m, float apart_step_m, float 
          (apart_step_m <= other_step_m ||
           apart_step_m <= std::min(other_step_m + kStepSlackM, kStepSlackBelowM));
 }
+// `other_zero` (optional): filled where the sign was solved in both swivel zeros.
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr,
-                            EscapeAlternative* escape = nullptr);
+                            OtherZeroSolve* other_zero = nullptr, EscapeAlternative* escape = nullptr);
+
+// The sign solved in ctx's swivel zero only (no zero choice), with more last ramp rounds where
+// the last one's own corrections jump between frames and the sign's clip leaps (an arm step over
+// kSwivelChoiceStepM): those corrections come on at once, nothing ramps them (sign_motion.cpp
+// ramp_rounds). For the phrase to judge with the transitions (synthesize.cpp); `errors` repeat
+// the first solve's.
+bool synthesize_sign_motion_ramped_again(const SynthContext& ctx, const notation::SignSpec& sign,
+                                         const std::string& where, SignMotion* out,
+                                         std::vector<SynthesisError>* errors, SignMotion* usual_alternative);
+
+// A sign's own clip's deepest frame as the phrase measures it (m.sign_depth_m where
+// synthesize_sign_motion measured it, else measured here).
+float sign_motion_depth(const SynthContext& ctx, const SignMotion& m);
 
 // Name of the body anchor for a location (`body/chest/right`, `space/centre`), mirrored when the
 // hand's side is mirrored; empty for places on the other hand.

@@ -109,6 +109,32 @@ TEST(HamNoSysLocations, ABracketWithABodyPlaceInsideIsStillAPath) {
   EXPECT_FALSE(any_target_on_the_other_hand(s));
 }
 
+// After hambelowstomach the corpus writes places on the legs with the arm's symbols in a sequence
+// of places (tights and stockings: "hambelowstomach [hamupperarm hamlrat]", the thigh; a knee:
+// "[hamelbowinside]"). Read as a part of this hand, the hand put its own upper arm (or the inside
+// of its elbow) at the belly (docs/SYNTHESIS.md leap): the same place as hambelowstomach alone,
+// no contact part.
+TEST(HamNoSysLocations, AnArmPlaceInASequenceBelowTheStomachIsOnTheLegNotThisHandsPart) {
+  const SignSpec plain = read_clean("hamflathand,hamextfingerd,hampalml,hambelowstomach,hamlrat,hamtouch,hammoveu");
+  for (const char* text :
+       {"hamflathand,hamextfingerd,hampalml,hambelowstomach,hamseqbegin,hamupperarm,hamlrat,hamseqend,hamtouch,"
+        "hammoveu",
+        "hamflathand,hamextfingerd,hampalml,hambelowstomach,hamlrat,hamseqbegin,hamelbowinside,hamseqend,hamtouch,"
+        "hammoveu"}) {
+    SCOPED_TRACE(text);
+    const SignSpec s = read_clean(text);
+    const Location& l = s.dominant.location;
+    EXPECT_FALSE(l.contact_part.has_value());
+    EXPECT_EQ(l.kind, Location::Kind::Body);
+    EXPECT_EQ(l.level, plain.dominant.location.level);
+    EXPECT_EQ(l.side, Side::Right);
+    EXPECT_EQ(l.contact, Contact::Touch);
+    ASSERT_EQ(s.movements.size(), 1u);
+    EXPECT_EQ(s.movements[0].dominant[0].kind, MovementKind::Straight);
+    expect_round_trip(s);
+  }
+}
+
 // A symmetric pair whose hands touch each other (hamsymmlr, the dominant hand's back on the other
 // palm, circling): both hands make the movement, the non-dominant one mirrored. It was read with
 // nondominant_is_place, so one hand circled on a still one.

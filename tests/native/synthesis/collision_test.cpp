@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 
 #include "notation/hamnosys.h"
@@ -948,6 +949,42 @@ TEST(SynthesisCollision, TrunkCrossingStopsALineThatGoesThroughTheBody) {
   const glm::vec3 head_mid = 0.5f * (head->a + head->b);
   const glm::vec3 ear = head_mid - left * head->radius_m, mouth = head_mid + fwd * head->radius_m;
   EXPECT_FALSE(trunk_crossing(ctx.body, rest, ear, mouth, 0.01f).through);
+}
+
+// A hand held close in front of the far side's shoulders moving in to touch them (the corpus's
+// BIRTHDAY5^, SUCCESS2^, CHANCE1^, PARTY-POLITICAL1^ are of this family: 13.7-14.0 mm on the
+// project avatar): the upper arm crosses the front of the chest, and its first stretch, 4-12 cm
+// from the shoulder joint, went through the round top of the torso capsule on its own side
+// (docs/SYNTHESIS.md arm-side). No swivel clears it (the elbow's whole circle measured: its best
+// within a few mm of the pick); the shoulder girdle does, protracted as it is for wrists across
+// the body nearer the chest, which the usual zone withholds beyond 27% of the reach in front of
+// the shoulder. Such a sign is solved again with the wider zones (synthesize.cpp
+// choose_wide_protraction) and keeps the shallower clip. Notations written for the test; before,
+// the project avatar 13.7 / 6.5 mm, now 3.5 / 1.2 mm (the reference humanoid 0.0 / 0.2 mm both
+// ways: it is not solved again).
+TEST(SynthesisCollision, AnUpperArmCrossingTheChestTakesTheShoulderGirdleForward) {
+  std::string error;
+  const NamedRigs rigs = reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  const char* const signs[] = {
+      "hamfinger23,hamextfingerul,hampalmd,hamlrat,hamshoulders,hamclose,hammovei,hamtouch",
+      "hamfist,hamextfingeru,hampalml,hamlrat,hamshoulders,hamclose,hammovei,hamtouch",
+  };
+  for (const auto& [name, av] : rigs) {
+    Synthesizer synth(av);
+    ASSERT_TRUE(synth.ok()) << synth.error();
+    for (const char* names : signs) {
+      notation::SignSpec s;
+      ASSERT_TRUE(read_one_hamnosys(names, &s));
+      const SynthesisResult r = synth.sign(s, SynthesisOptions{});
+      ASSERT_TRUE(r.ok()) << name << ": " << r.errors[0].message;
+      std::printf("%s %s: %.1f mm, touch %.1f mm\n", name.c_str(), names, r.report.max_penetration_m * 1000.0f,
+                  r.report.max_reach_error_m * 1000.0f);
+      EXPECT_LE(r.report.max_penetration_m, 0.005f)
+          << name << " " << names << ": " << r.report.max_penetration_m * 1000.0f << " mm";
+      EXPECT_LT(r.report.max_reach_error_m, 0.01f) << name << " " << names;
+    }
+  }
 }
 
 }  // namespace
