@@ -192,8 +192,9 @@ TEST(CorpusSynthesis, EveryCleanSignSynthesises) {
 TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   const CorpusSample& s = corpus_sample();
   if (!s.skip.empty()) GTEST_SKIP() << s.skip;
-  // The sample's measured figures, every 2nd clean sign: 2,237 synthesised, 37 over 5 mm
-  // (1.7 %), deepest 77 mm (ratować), after sign-hands (a symmetric pair written at one place laid
+  // The sample's measured figures, every 2nd clean sign: 2,237 synthesised, 18 over 5 mm
+  // (0.8 %), deepest 77 mm (ratować), sign-hands merged with leap and arm-side; 37 (1.7 %) after
+  // sign-hands on rest-meet (a symmetric pair written at one place laid
   // apart to both sides; hand in other hand 18 -> 2 signs); 62 (2.8 %) after rest-meet (the hands of a rest transition come
   // together along a line they stay clear along; hand in other hand 23 -> 18 signs); 67 (3.0 %)
   // on main before it; 68 (3.0 %) after push-rest (a hand caught between the chin and the
@@ -213,7 +214,7 @@ TEST(CorpusSynthesis, RealSignsKeepTheirArmsAndHandsOutOfTheBody) {
   // that adds least); 208 (9.4 %) of 2,217 before the HamNoSys reader read the bracketed contact
   // part after a place as that (hamnosys_parser.cpp, read_contact_bracket); 21 % of all signs
   // before corpus-depth.
-  constexpr float kMeasuredShareOver5mm = 0.017f;
+  constexpr float kMeasuredShareOver5mm = 0.008f;
   constexpr float kMeasuredDeepest_m = 0.077f;
 
   int synthesised = 0, over = 0;
