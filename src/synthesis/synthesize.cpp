@@ -163,22 +163,29 @@ void choose_with_transitions(const SynthContext& ctx, const std::vector<PhraseIt
   }
 }
 
-// A mirror pair laid apart to both sides at its key pose (sign_motion.h EscapeAlternative) is
-// judged against the clip with the dominant hand alone moved out of the way, both with the
-// transitions next to the sign, as the jam rule's clips are (the escape's own jam choice made
-// first, as choose_with_transitions makes it): the laid-apart clip stays where
-// mirror_apart_is_kept says so. Judged on the sign alone, 4 HamNoSys corpus signs were 2.8-3.8
-// mm deeper with their rest transitions (PEACE1^ 0.0 -> 3.8 mm, potem 1.9 -> 4.8; docs/SYNTHESIS.md
-// sign-hands).
+// A symmetric pair laid apart to both sides at its key pose (SignMotion::mirror_laid_apart) is
+// judged against the clip with the dominant hand alone moved out of the way (the escape, solved
+// here: synthesize_sign_motion_escaping), both with the transitions next to the sign, as the jam
+// rule's clips are (the escape's own jam choice made first, as choose_with_transitions makes it):
+// the laid-apart clip stays where mirror_apart_is_kept says so. Judged on the sign alone, 4
+// HamNoSys corpus signs were 2.8-3.8 mm deeper with their rest transitions (PEACE1^ 0.0 -> 3.8 mm,
+// potem 1.9 -> 4.8; docs/SYNTHESIS.md sign-hands). A laid-apart clip that is clean with its
+// transitions (0.1 mm) and steps at most kCleanStepM in a frame is kept without the escape's
+// solve: the escape could win only on a smaller step, and under kCleanStepM (the lexicon's largest
+// step is 68 mm) that is not worth a second solve and its transitions (they were 3.9 % of the
+// lexicon's instructions; measured, the one corpus sign that then keeps the laid-apart clip steps
+// 45 -> 56 mm, nothing deeper).
+constexpr float kCleanStepM = 0.06f;
 void choose_mirror_apart(const SynthContext& ctx, const std::vector<PhraseItem>& items,
-                         std::vector<SignMotion>* motions, std::vector<EscapeAlternative>* escapes) {
+                         std::vector<SignMotion>* motions) {
   const bool from_rest = ctx.options.start_from_rest;
   auto is_sign = [&](size_t j) {
     return items[j].kind != PhraseItem::Kind::Pause && (*motions)[j].frame_count > 0;
   };
   for (size_t i = 0; i < items.size(); ++i) {
-    EscapeAlternative& e = (*escapes)[i];
-    if (e.clip.frame_count == 0 || !is_sign(i)) continue;
+    if (!is_sign(i) || !(*motions)[i].mirror_laid_apart || !ctx.mirror_pairs_apart ||
+        !ctx.options.avoid_collisions)
+      continue;
     const glm::quat* before = nullptr;
     std::uint8_t before_exempt = 0;
     for (size_t j = i; j-- > 0 && !before;)
@@ -199,19 +206,25 @@ void choose_mirror_apart(const SynthContext& ctx, const std::vector<PhraseItem>&
     auto measure = [&](const SignMotion& m) {
       return measure_with_transitions(ctx, m, before, before_exempt, after, after_exempt);
     };
+    const WithTransitions apart = measure((*motions)[i]);
+    if (apart.depth_m <= 1e-4f && apart.step_m <= kCleanStepM) continue;
+    SignMotion escape, escape_usual;
+    std::vector<SynthesisError> repeated;  // the same sign: the first solve's errors
+    const std::string where = "sign " + std::to_string(i + 1);
+    if (!synthesize_sign_motion_escaping(ctx, items[i].sign, where, &escape, &repeated, &escape_usual) ||
+        escape.frame_count == 0)
+      continue;
     // The escape's own jam choice, as choose_with_transitions makes it.
-    WithTransitions other = measure(e.clip);
-    if (e.usual.frame_count > 0) {
-      const WithTransitions plain = measure(e.usual);
+    WithTransitions other = measure(escape);
+    if (escape_usual.frame_count > 0) {
+      const WithTransitions plain = measure(escape_usual);
       if (!(other.depth_m <= plain.depth_m + 1e-4f && other.step_m <= plain.step_m)) {
-        e.clip = std::move(e.usual);
+        escape = std::move(escape_usual);
         other = plain;
       }
     }
-    const WithTransitions apart = measure((*motions)[i]);
     if (!mirror_apart_is_kept(apart.depth_m, apart.step_m, other.depth_m, other.step_m))
-      (*motions)[i] = std::move(e.clip);
-    e = EscapeAlternative{};
+      (*motions)[i] = std::move(escape);
   }
 }
 
@@ -224,16 +237,15 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
 
   // Every sign first, so all errors are reported together.
   std::vector<SignMotion> motions(items.size()), usual(items.size());
-  std::vector<EscapeAlternative> escapes(items.size());
   for (size_t i = 0; i < items.size(); ++i) {
     if (items[i].kind == PhraseItem::Kind::Pause) continue;
     std::string where = "sign " + std::to_string(i + 1) +
                         (items[i].label.empty() ? "" : " '" + items[i].label + "'");
-    synthesize_sign_motion(ctx, items[i].sign, where, &motions[i], &result.errors, &usual[i], &escapes[i]);
+    synthesize_sign_motion(ctx, items[i].sign, where, &motions[i], &result.errors, &usual[i], true);
   }
   if (!result.errors.empty()) return result;
   choose_with_transitions(ctx, items, &motions, &usual);
-  choose_mirror_apart(ctx, items, &motions, &escapes);
+  choose_mirror_apart(ctx, items, &motions);
 
   Timeline tl;
   tl.joints = J;
