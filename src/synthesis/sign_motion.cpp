@@ -3131,36 +3131,29 @@ static bool synthesize_sign_motion_in_chosen_zero(const SynthContext& ctx, const
   return true;
 }
 
-// A mirror pair written at one place is laid apart to both sides (lay_mirror_pair_apart); the
-// sign is then solved once more with the dominant hand alone moved out of the way (as before that
-// rule), and the laid-apart clip is kept only where mirror_apart_is_kept says so: the movements,
-// frame pushes and ramps that follow were tuned on the old key pose, and some signs' movements
-// fare better from it (docs/SYNTHESIS.md, sign-hands). The phrase judges the two with the
-// transitions next to the sign (`escape`, synthesize.cpp); without it they are judged here, on the
-// sign's own frames. The cost: a second solve of the signs laid apart (5 of the lexicon's 141).
+// A symmetric pair written at one place is laid apart to both sides (lay_mirror_pair_apart); the
+// laid-apart clip is kept only where mirror_apart_is_kept says so against the clip with the
+// dominant hand alone moved out of the way (as before that rule): the movements, frame pushes and
+// ramps that follow were tuned on the old key pose, and some signs' movements fare better from it
+// (docs/SYNTHESIS.md, sign-hands). The phrase judges the two with the transitions next to the
+// sign (`mirror_judged_by_caller`, synthesize.cpp choose_mirror_apart); without it they are judged
+// here, on the sign's own frames.
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors, SignMotion* usual_alternative,
-                            OtherZeroSolve* other_zero, EscapeAlternative* escape) {
-  if (escape) *escape = EscapeAlternative{};
+                            OtherZeroSolve* other_zero, bool mirror_judged_by_caller) {
   if (!synthesize_sign_motion_in_chosen_zero(ctx, sign, where, out, errors, usual_alternative, other_zero))
     return false;
-  if (!out->mirror_laid_apart || !ctx.mirror_pairs_apart || !ctx.options.avoid_collisions) return true;
-  SynthContext escape_ctx = ctx;
-  escape_ctx.mirror_pairs_apart = false;
+  if (mirror_judged_by_caller || !out->mirror_laid_apart || !ctx.mirror_pairs_apart ||
+      !ctx.options.avoid_collisions)
+    return true;
   SignMotion other, other_alternative;
-  std::vector<SynthesisError> repeated;
   OtherZeroSolve other_zero_of_escape;
-  if (!synthesize_sign_motion_in_chosen_zero(escape_ctx, sign, where, &other, &repeated,
-                                             usual_alternative ? &other_alternative : nullptr,
-                                             other_zero ? &other_zero_of_escape : nullptr))
+  std::vector<SynthesisError> repeated;
+  if (!synthesize_sign_motion_escaping(ctx, sign, where, &other, &repeated,
+                                       usual_alternative ? &other_alternative : nullptr,
+                                       other_zero ? &other_zero_of_escape : nullptr))
     return true;
-  if (escape) {
-    escape->other_zero = std::move(other_zero_of_escape);
-    escape->clip = std::move(other);
-    escape->usual = std::move(other_alternative);
-    return true;
-  }
   float step = 0.0f, other_step = 0.0f;
   const float depth = sign_depth_and_step(ctx, *out, &step);
   const float other_depth = sign_depth_and_step(ctx, other, &other_step);
@@ -3170,6 +3163,16 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
     if (other_zero) *other_zero = std::move(other_zero_of_escape);
   }
   return true;
+}
+
+bool synthesize_sign_motion_escaping(const SynthContext& ctx, const notation::SignSpec& sign,
+                                     const std::string& where, SignMotion* out,
+                                     std::vector<SynthesisError>* errors, SignMotion* usual_alternative,
+                                     OtherZeroSolve* other_zero) {
+  SynthContext escape_ctx = ctx;
+  escape_ctx.mirror_pairs_apart = false;
+  return synthesize_sign_motion_in_chosen_zero(escape_ctx, sign, where, out, errors, usual_alternative,
+                                               other_zero);
 }
 
 bool synthesize_sign_motion_ramped_again(const SynthContext& ctx, const notation::SignSpec& sign,

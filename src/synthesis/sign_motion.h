@@ -88,14 +88,6 @@ struct OtherZeroSolve {
 // `usual_alternative` (optional): where a hand caught between two capsules was sent out by the
 // jam rule (sign_motion.cpp) and that clip kept, the clip solved without the rule, for the caller
 // to judge the two with the transitions next to the sign; otherwise left empty (frame_count 0).
-// `escape` (optional): where the key pose's mirror pair was laid apart to both sides
-// (SignMotion::mirror_laid_apart), the sign solved with the dominant hand alone moved out of the
-// way instead (`clip`, and its own `usual` alternative as above), for the caller to judge with the
-// transitions; otherwise left empty. Without `escape` the two are judged on the sign's frames.
-struct EscapeAlternative {
-  SignMotion clip, usual;
-  OtherZeroSolve other_zero;  // the escape's solve in the other swivel zero (as `other_zero` below)
-};
 // Whether the laid-apart clip (its deepest frame and largest wrist or elbow step in one frame) is
 // kept over the escape's: no deeper (0.1 mm, rounding), and stepping no more in a frame, or at most
 // 1 cm more while that stays within 100 mm (3 m/s at 30 fps: the corpus census's first bound; a
@@ -112,10 +104,21 @@ inline bool mirror_apart_is_kept(float apart_depth_m, float apart_step_m, float 
           apart_step_m <= std::min(other_step_m + kStepSlackM, kStepSlackBelowM));
 }
 // `other_zero` (optional): filled where the sign was solved in both swivel zeros.
+// `mirror_judged_by_caller`: where the key pose's pair was laid apart to both sides
+// (SignMotion::mirror_laid_apart), the caller judges that clip against the old escape's
+// (synthesize_sign_motion_escaping) with the transitions next to the sign; otherwise the two are
+// judged here, on the sign's own frames (mirror_apart_is_kept).
 bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& sign,
                             const std::string& where, SignMotion* out,
                             std::vector<SynthesisError>* errors, SignMotion* usual_alternative = nullptr,
-                            OtherZeroSolve* other_zero = nullptr, EscapeAlternative* escape = nullptr);
+                            OtherZeroSolve* other_zero = nullptr, bool mirror_judged_by_caller = false);
+// The sign with a symmetric pair's key pose laid out of the way by the dominant hand alone (the
+// escape, SynthContext::mirror_pairs_apart off), `usual_alternative` and `other_zero` as above;
+// `errors` repeat the first solve's.
+bool synthesize_sign_motion_escaping(const SynthContext& ctx, const notation::SignSpec& sign,
+                                     const std::string& where, SignMotion* out,
+                                     std::vector<SynthesisError>* errors, SignMotion* usual_alternative,
+                                     OtherZeroSolve* other_zero);
 
 // The sign solved in ctx's swivel zero only (no zero choice), with more last ramp rounds where
 // the last one's own corrections jump between frames and the sign's clip leaps (an arm step over

@@ -375,30 +375,42 @@ void choose_wide_protraction(const SynthContext& ctx, const std::vector<PhraseIt
   }
 }
 
-// A mirror pair laid apart to both sides at its key pose (sign_motion.h EscapeAlternative) is
-// judged against the clip with the dominant hand alone moved out of the way, both with the
-// transitions next to the sign, as the jam rule's clips are (the escape's own jam choice made
-// first, as choose_with_transitions makes it): the laid-apart clip stays where
-// mirror_apart_is_kept says so. Judged on the sign alone, 4 HamNoSys corpus signs were 2.8-3.8
-// mm deeper with their rest transitions (PEACE1^ 0.0 -> 3.8 mm, potem 1.9 -> 4.8; docs/SYNTHESIS.md
-// sign-hands).
+// A symmetric pair laid apart to both sides at its key pose (SignMotion::mirror_laid_apart) is
+// judged against the clip with the dominant hand alone moved out of the way (the escape, solved
+// here: synthesize_sign_motion_escaping), both with the transitions next to the sign, as the jam
+// rule's clips are (the escape's own jam choice made first, as choose_with_transitions makes it):
+// the laid-apart clip stays where mirror_apart_is_kept says so. Judged on the sign alone, 4
+// HamNoSys corpus signs were 2.8-3.8 mm deeper with their rest transitions (PEACE1^ 0.0 -> 3.8 mm,
+// potem 1.9 -> 4.8; docs/SYNTHESIS.md sign-hands). A laid-apart clip that is clean with its
+// transitions (0.1 mm) and steps at most kCleanStepM in a frame is kept without the escape's
+// solve: the escape could win only on a smaller step, and under kCleanStepM (the lexicon's largest
+// step is 68 mm) that is not worth a second solve and its transitions (they were 3.9 % of the
+// lexicon's instructions; measured, the one corpus sign that then keeps the laid-apart clip steps
+// 45 -> 56 mm, nothing deeper). Where the escape is kept, so is its other-zero solve.
+constexpr float kCleanStepM = 0.06f;
 void choose_mirror_apart(const SynthContext& ctx, const std::vector<PhraseItem>& items,
-                         std::vector<SignMotion>* motions, std::vector<OtherZeroSolve>* others,
-                         std::vector<EscapeAlternative>* escapes) {
+                         std::vector<SignMotion>* motions, std::vector<OtherZeroSolve>* others) {
   for (size_t i = 0; i < items.size(); ++i) {
-    EscapeAlternative& e = (*escapes)[i];
-    if (e.clip.frame_count == 0 || items[i].kind == PhraseItem::Kind::Pause || (*motions)[i].frame_count == 0)
+    if (items[i].kind == PhraseItem::Kind::Pause || (*motions)[i].frame_count == 0 ||
+        !(*motions)[i].mirror_laid_apart || !ctx.mirror_pairs_apart || !ctx.options.avoid_collisions)
       continue;
     const Neighbours n = neighbours_of(ctx, items, *motions, i);
-    // The escape's own jam choice, as choose_with_transitions makes it.
-    choose_jam_with_transitions(ctx, n, ctx.options.carry_elbows, &e.clip, &e.usual);
-    const WithTransitions other = measure_with_transitions(ctx, e.clip, n, ctx.options.carry_elbows);
     const WithTransitions apart = measure_with_transitions(ctx, (*motions)[i], n, ctx.options.carry_elbows);
+    if (apart.depth_m <= 1e-4f && apart.step_m <= kCleanStepM) continue;
+    SignMotion escape, escape_usual;
+    OtherZeroSolve escape_other;
+    std::vector<SynthesisError> repeated;  // the same sign: the first solve's errors
+    const std::string where = "sign " + std::to_string(i + 1);
+    if (!synthesize_sign_motion_escaping(ctx, items[i].sign, where, &escape, &repeated, &escape_usual,
+                                         &escape_other) ||
+        escape.frame_count == 0)
+      continue;
+    choose_jam_with_transitions(ctx, n, ctx.options.carry_elbows, &escape, &escape_usual);
+    const WithTransitions other = measure_with_transitions(ctx, escape, n, ctx.options.carry_elbows);
     if (!mirror_apart_is_kept(apart.depth_m, apart.step_m, other.depth_m, other.step_m)) {
-      (*motions)[i] = std::move(e.clip);
-      (*others)[i] = std::move(e.other_zero);
+      (*motions)[i] = std::move(escape);
+      (*others)[i] = std::move(escape_other);
     }
-    e = EscapeAlternative{};
   }
 }
 
@@ -412,13 +424,11 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
   // Every sign first, so all errors are reported together.
   std::vector<SignMotion> motions(items.size()), usual(items.size());
   std::vector<OtherZeroSolve> others(items.size());
-  std::vector<EscapeAlternative> escapes(items.size());
   for (size_t i = 0; i < items.size(); ++i) {
     if (items[i].kind == PhraseItem::Kind::Pause) continue;
     std::string where = "sign " + std::to_string(i + 1) +
                         (items[i].label.empty() ? "" : " '" + items[i].label + "'");
-    synthesize_sign_motion(ctx, items[i].sign, where, &motions[i], &result.errors, &usual[i], &others[i],
-                           &escapes[i]);
+    synthesize_sign_motion(ctx, items[i].sign, where, &motions[i], &result.errors, &usual[i], &others[i], true);
   }
   if (!result.errors.empty()) return result;
   // Each sign's choices, in this order (docs/SYNTHESIS.md arm-side, merged with leap; sign-hands):
@@ -428,7 +438,7 @@ SynthesisResult run_phrase(const SynthContext& ctx, const std::vector<PhraseItem
   // extra last ramp rounds (choose_zero_with_transitions, below), in the zone the sign then has,
   // and the clip built again only where they changed a sign.
   choose_with_transitions(ctx, items, &motions, &usual);
-  choose_mirror_apart(ctx, items, &motions, &others, &escapes);
+  choose_mirror_apart(ctx, items, &motions, &others);
   choose_wide_protraction(ctx, items, &motions, &others);
 
   Timeline tl;
