@@ -949,6 +949,29 @@ float hands_pair_depth(const SynthContext& ctx, const std::array<HandPlan, 2>& p
                    hand_penetration(ctx.body, pb, other(d), false, true).depth_m});
 }
 
+// A symmetric pair written at one place whose fingers both point across the body at the other
+// hand (within 60 degrees of the lateral axis: E(lo) mirrored is 45, E(o), E(u) 90): the fingers
+// cross there, and a signer lays one on the other (ASL DIFFERENT: the index fingers an X), which
+// is the escape's way below (the dominant hand on top), not side by side, where they would only
+// meet tip to tip. Hands at mirror places apart (HOUSE's roof: the fingertips meet) do not count.
+// The escape is then kept wherever it is clean and passes the step rule against the laid-apart
+// clip (sign_motion.h mirror_apart_is_kept's SignMotion overload: synthesize_sign_motion,
+// choose_mirror_apart).
+bool mirror_fingers_cross(const SynthContext& ctx, const std::array<HandPlan, 2>& plans,
+                          const std::array<HandState, 2>& key) {
+  constexpr float kAcrossCos = 0.5f, kOnePlaceM = 0.02f;
+  const Rig& rig = ctx.rig;
+  if (!plans[1].copy_of_dominant) return false;
+  if (glm::length(key[0].target - key[1].target) > kOnePlaceM) return false;
+  const glm::vec3 lateral = glm::normalize(rig.left);
+  for (int i = 0; i < 2; ++i) {
+    const glm::vec3 fingers = key[i].delta * rig.arms[plans[i].side].finger_dir;
+    const glm::vec3 to_other = plans[i].side == kLeft ? -lateral : lateral;
+    if (!(glm::dot(fingers, to_other) > kAcrossCos)) return false;
+  }
+  return true;
+}
+
 // A symmetric pair (the other hand the dominant one's copy, its place mirrored: hamsymmlr,
 // hamsymmpar) written at one place, or at mirror places whose hands still meet, is laid apart as a
 // signer holds it: both hands out to their own sides by the same amount, the places still
@@ -1876,6 +1899,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
       wrist_from_contact[i] = arm_segments(rig, plans[i].side, ap).wrist - t.point;
     }
   }
+  const bool fingers_cross = mirror_fingers_cross(ctx, plans, key);
   const bool mirror_laid_apart = separate_crossed_hands(solver, plans, &key);
   std::array<glm::quat, 2> give_way = {resting_arm_gives_way(solver, plans, key, 0),
                                        resting_arm_gives_way(solver, plans, key, 1)};
@@ -2273,6 +2297,7 @@ bool synthesize_sign_motion_timed(const SynthContext& ctx, const notation::SignS
   st.out = std::move(*result);
   SignMotion* const out = &st.out;
   out->mirror_laid_apart = mirror_laid_apart;
+  out->mirror_fingers_cross = mirror_laid_apart && fingers_cross;
   out->frame_count = static_cast<int>(frames.size());
   out->rotations.resize(static_cast<size_t>(out->frame_count) * J);
   out->exempt.assign(out->frame_count, 0);
@@ -3157,7 +3182,7 @@ bool synthesize_sign_motion(const SynthContext& ctx, const notation::SignSpec& s
   float step = 0.0f, other_step = 0.0f;
   const float depth = sign_depth_and_step(ctx, *out, &step);
   const float other_depth = sign_depth_and_step(ctx, other, &other_step);
-  if (!mirror_apart_is_kept(depth, step, other_depth, other_step)) {
+  if (!mirror_apart_is_kept(*out, depth, step, other_depth, other_step)) {
     *out = std::move(other);
     if (usual_alternative) *usual_alternative = std::move(other_alternative);
     if (other_zero) *other_zero = std::move(other_zero_of_escape);

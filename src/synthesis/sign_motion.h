@@ -58,6 +58,8 @@ struct SignMotion {
   std::vector<std::string> warnings;
   int pushes = 0;                     // frames pushed out of the body
   bool mirror_laid_apart = false;     // the key pose's mirror pair was laid apart to both sides
+  // ... and that pair's fingers cross at its one place (sign_motion.cpp mirror_fingers_cross).
+  bool mirror_fingers_cross = false;
   // The deepest frame of the sign's own clip as the phrase measures it (after the elbow's path;
   // sign_motion.cpp sign_depth_and_step), where synthesize_sign_motion measured it; -1: not.
   float sign_depth_m = -1.0f;
@@ -102,6 +104,21 @@ inline bool mirror_apart_is_kept(float apart_depth_m, float apart_step_m, float 
   return apart_depth_m <= other_depth_m + 1e-4f &&
          (apart_step_m <= other_step_m ||
           apart_step_m <= std::min(other_step_m + kStepSlackM, kStepSlackBelowM));
+}
+// The same for the laid-apart clip `apart`: where its fingers cross at one place
+// (SignMotion::mirror_fingers_cross) the escape, the dominant hand laid on top, is the signer's
+// way, and it is kept wherever it is clean (within kBranchSignSlackM, 0.5 mm) and passes the step
+// rule against the laid-apart clip. Judged as the other way round (the escape kept only where no
+// deeper than the laid-apart clip), 50 corpus signs took an escape that a later choice (the wider
+// protraction, solved only for deep clips) left deep while it would have cleared the laid-apart
+// one (montaż 1.8 -> 13.3 mm; docs/SYNTHESIS.md sign-hands, crossed fingers).
+inline bool mirror_apart_is_kept(const SignMotion& apart, float apart_depth_m, float apart_step_m,
+                                 float other_depth_m, float other_step_m) {
+  constexpr float kCleanEscapeM = 0.0005f;
+  if (apart.mirror_fingers_cross && other_depth_m <= kCleanEscapeM &&
+      mirror_apart_is_kept(0.0f, other_step_m, 0.0f, apart_step_m))
+    return false;
+  return mirror_apart_is_kept(apart_depth_m, apart_step_m, other_depth_m, other_step_m);
 }
 // `other_zero` (optional): filled where the sign was solved in both swivel zeros.
 // `mirror_judged_by_caller`: where the key pose's pair was laid apart to both sides

@@ -396,7 +396,10 @@ void choose_mirror_apart(const SynthContext& ctx, const std::vector<PhraseItem>&
       continue;
     const Neighbours n = neighbours_of(ctx, items, *motions, i);
     const WithTransitions apart = measure_with_transitions(ctx, (*motions)[i], n, ctx.options.carry_elbows);
-    if (apart.depth_m <= 1e-4f && apart.step_m <= kCleanStepM) continue;
+    // Crossing fingers are judged against the escape even where the laid-apart clip is clean.
+    if (apart.depth_m <= 1e-4f && apart.step_m <= kCleanStepM &&
+        !(*motions)[i].mirror_fingers_cross)
+      continue;
     SignMotion escape, escape_usual;
     OtherZeroSolve escape_other;
     std::vector<SynthesisError> repeated;  // the same sign: the first solve's errors
@@ -407,7 +410,8 @@ void choose_mirror_apart(const SynthContext& ctx, const std::vector<PhraseItem>&
       continue;
     choose_jam_with_transitions(ctx, n, ctx.options.carry_elbows, &escape, &escape_usual);
     const WithTransitions other = measure_with_transitions(ctx, escape, n, ctx.options.carry_elbows);
-    if (!mirror_apart_is_kept(apart.depth_m, apart.step_m, other.depth_m, other.step_m)) {
+    if (!mirror_apart_is_kept((*motions)[i], apart.depth_m, apart.step_m, other.depth_m,
+                              other.step_m)) {
       (*motions)[i] = std::move(escape);
       (*others)[i] = std::move(escape_other);
     }

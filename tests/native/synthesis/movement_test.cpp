@@ -407,6 +407,38 @@ TEST_F(SynthesisMovement, EveryMovementKindSynthesises) {
     }
 }
 
+// Index fingers that point across at each other from one place cross there, one laid on the other
+// (ASL DIFFERENT, the starter lexicon's notation): laid apart to both sides as other mirror pairs
+// at one place are, they met tip to tip and the X the sign is made of was gone
+// (sign_motion.cpp mirror_fingers_cross).
+TEST(SynthesisMovementTwoHands, FingersPointingAcrossAtOnePlaceCrossOneOnTheOther) {
+  const PhraseText text =
+      phrase_from_text("R(H(finger2), E(lo), P(d), Loc(neutral, centre, close), M(straight, r)) "
+                       "Sym(lr)",
+                       {});
+  ASSERT_TRUE(text.ok());
+  std::string error;
+  const NamedRigs rigs = reference_and_project_avatar(&error);
+  ASSERT_TRUE(error.empty()) << error;
+  for (const auto& [name, av] : rigs) {
+    Rig rig;
+    ASSERT_TRUE(build_rig(av, &rig, &error)) << error;
+    const SynthesisResult r = synthesize_phrase(text.items, av);
+    ASSERT_TRUE(r.ok()) << name;
+    EXPECT_LE(r.report.max_penetration_m, 0.005f) << name;
+    // Crossed: each index tip past the other one towards the other hand's side (the right tip left
+    // of the left tip), the two fingers one above the other.
+    const PoseBuilder key = frame_pose(rig, r.clip, first_sign_frame(r.clip));
+    const glm::vec3 right_tip = key.tip(kRight, 1), left_tip = key.tip(kLeft, 1);
+    const float crossed_m = glm::dot(right_tip - left_tip, glm::normalize(rig.left));
+    EXPECT_GT(crossed_m, 0.02f) << name << ": the index tips " << crossed_m << " m crossed";
+    const glm::vec3 right_knuckle = key.position(rig.arms[kRight].fingers[1].bones[0]);
+    const glm::vec3 left_knuckle = key.position(rig.arms[kLeft].fingers[1].bones[0]);
+    EXPECT_GT(std::abs(glm::dot(right_knuckle - left_knuckle, rig.up)), 0.01f)
+        << name << ": the fingers side by side, not one on the other";
+  }
+}
+
 }  // namespace
 }  // namespace sw::synthesis
 
