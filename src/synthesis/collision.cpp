@@ -495,4 +495,3 @@ TrunkCrossing trunk_crossing(const BodyModel& body, const PoseBuilder& pose, con
 }
 
 }  // namespace sw::synthesis
-

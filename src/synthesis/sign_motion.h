@@ -86,10 +86,6 @@ struct OtherZeroSolve {
   SignMotion motion, usual_alternative;
 };
 
-// Synthesises one sign's frames (no transitions in or out). `where` prefixes error locations.
-// `usual_alternative` (optional): where a hand caught between two capsules was sent out by the
-// jam rule (sign_motion.cpp) and that clip kept, the clip solved without the rule, for the caller
-// to judge the two with the transitions next to the sign; otherwise left empty (frame_count 0).
 // Whether the laid-apart clip (its deepest frame and largest wrist or elbow step in one frame) is
 // kept over the escape's: no deeper (0.1 mm, rounding), and stepping no more in a frame, or at most
 // 1 cm more while that stays within 100 mm (3 m/s at 30 fps: the corpus census's first bound; a
@@ -120,6 +116,11 @@ inline bool mirror_apart_is_kept(const SignMotion& apart, float apart_depth_m, f
     return false;
   return mirror_apart_is_kept(apart_depth_m, apart_step_m, other_depth_m, other_step_m);
 }
+
+// Synthesises one sign's frames (no transitions in or out). `where` prefixes error locations.
+// `usual_alternative` (optional): where a hand caught between two capsules was sent out by the
+// jam rule (sign_motion.cpp) and that clip kept, the clip solved without the rule, for the caller
+// to judge the two with the transitions next to the sign; otherwise left empty (frame_count 0).
 // `other_zero` (optional): filled where the sign was solved in both swivel zeros.
 // `mirror_judged_by_caller`: where the key pose's pair was laid apart to both sides
 // (SignMotion::mirror_laid_apart), the caller judges that clip against the old escape's
