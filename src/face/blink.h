@@ -22,7 +22,6 @@ std::vector<double> schedule_blinks(double duration_s, const std::vector<double>
                                     std::uint32_t seed, const BlinkTiming& timing = {});
 
 // Lid closure in [0, 1] at time t for a schedule (cosine-shaped closing and opening).
-float blink_weight(const std::vector<double>& starts_s, double t_s,
-                   const BlinkTiming& timing = {});
+float blink_weight(const std::vector<double>& starts_s, double t_s, const BlinkTiming& timing = {});
 
 }  // namespace sw::face

@@ -10,8 +10,7 @@
 
 namespace sw::face {
 
-constexpr int kChannelCount =
-    static_cast<int>(kExpressionChannels.size() + kVisemeChannels.size());
+constexpr int kChannelCount = static_cast<int>(kExpressionChannels.size() + kVisemeChannels.size());
 
 struct ChannelWeights {
   std::array<float, kChannelCount> w{};

@@ -13,22 +13,22 @@
 namespace sw::face {
 
 constexpr std::array<std::string_view, 26> kExpressionChannels = {
-    "browInnerUp",                         // AU1
-    "browDownLeft", "browDownRight",       // AU4
-    "browOuterUpLeft", "browOuterUpRight", // AU2
-    "eyeBlinkLeft", "eyeBlinkRight",       // AU45 (upper lid closes)
-    "eyeSquintLeft", "eyeSquintRight",     // AU7 (lower lid up)
-    "eyeWideLeft", "eyeWideRight",         // AU5
-    "cheekSquintLeft", "cheekSquintRight", // AU6 cheek raise
-    "noseSneerLeft", "noseSneerRight",     // AU9 nose wrinkle
-    "mouthUpperUp",                        // AU10 upper-lip raise
-    "mouthSmileLeft", "mouthSmileRight",   // AU12 lip-corner puller
-    "mouthFrownLeft", "mouthFrownRight",   // AU15 lip-corner depressor
-    "mouthStretch",                        // AU20 lip stretch
-    "mouthPucker",                         // AU18 lip pucker / rounding
-    "mouthPress",                          // AU24 lip press
-    "mouthLowerDown",                      // AU16 lower-lip depressor
-    "jawOpen",                             // AU26/27 mouth open
+    "browInnerUp",                          // AU1
+    "browDownLeft",    "browDownRight",     // AU4
+    "browOuterUpLeft", "browOuterUpRight",  // AU2
+    "eyeBlinkLeft",    "eyeBlinkRight",     // AU45 (upper lid closes)
+    "eyeSquintLeft",   "eyeSquintRight",    // AU7 (lower lid up)
+    "eyeWideLeft",     "eyeWideRight",      // AU5
+    "cheekSquintLeft", "cheekSquintRight",  // AU6 cheek raise
+    "noseSneerLeft",   "noseSneerRight",    // AU9 nose wrinkle
+    "mouthUpperUp",                         // AU10 upper-lip raise
+    "mouthSmileLeft",  "mouthSmileRight",   // AU12 lip-corner puller
+    "mouthFrownLeft",  "mouthFrownRight",   // AU15 lip-corner depressor
+    "mouthStretch",                         // AU20 lip stretch
+    "mouthPucker",                          // AU18 lip pucker / rounding
+    "mouthPress",                           // AU24 lip press
+    "mouthLowerDown",                       // AU16 lower-lip depressor
+    "jawOpen",                              // AU26/27 mouth open
     "tongueOut",
 };
 

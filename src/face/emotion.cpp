@@ -24,27 +24,29 @@ std::vector<Offset> offsets_of(Emotion e) {
   switch (e) {
     case Emotion::Happy:
       return {{"cheekSquintLeft", 0.6f}, {"cheekSquintRight", 0.6f}, {"mouthSmileLeft", 0.9f},
-              {"mouthSmileRight", 0.9f}, {"eyeSquintLeft", 0.25f}, {"eyeSquintRight", 0.25f}};
+              {"mouthSmileRight", 0.9f}, {"eyeSquintLeft", 0.25f},   {"eyeSquintRight", 0.25f}};
     case Emotion::Sad:
-      return {{"browInnerUp", 0.85f}, {"browDownLeft", 0.3f}, {"browDownRight", 0.3f},
+      return {{"browInnerUp", 0.85f},   {"browDownLeft", 0.3f},    {"browDownRight", 0.3f},
               {"mouthFrownLeft", 0.7f}, {"mouthFrownRight", 0.7f}, {"mouthPress", 0.3f}};
     case Emotion::Angry:
       return {{"browDownLeft", 0.9f}, {"browDownRight", 0.9f}, {"eyeWideLeft", 0.3f},
               {"eyeWideRight", 0.3f}, {"eyeSquintLeft", 0.5f}, {"eyeSquintRight", 0.5f},
-              {"mouthPress", 0.6f}, {"noseSneerLeft", 0.2f}, {"noseSneerRight", 0.2f}};
+              {"mouthPress", 0.6f},   {"noseSneerLeft", 0.2f}, {"noseSneerRight", 0.2f}};
     case Emotion::Surprised:
       return {{"browInnerUp", 0.9f}, {"browOuterUpLeft", 0.9f}, {"browOuterUpRight", 0.9f},
-              {"eyeWideLeft", 0.8f}, {"eyeWideRight", 0.8f}, {"jawOpen", 0.45f}};
+              {"eyeWideLeft", 0.8f}, {"eyeWideRight", 0.8f},    {"jawOpen", 0.45f}};
     case Emotion::Fear:
-      return {{"browInnerUp", 0.8f}, {"browOuterUpLeft", 0.5f}, {"browOuterUpRight", 0.5f},
-              {"browDownLeft", 0.3f}, {"browDownRight", 0.3f}, {"eyeWideLeft", 0.8f},
-              {"eyeWideRight", 0.8f}, {"mouthStretch", 0.6f}, {"jawOpen", 0.2f}};
+      return {{"browInnerUp", 0.8f},  {"browOuterUpLeft", 0.5f}, {"browOuterUpRight", 0.5f},
+              {"browDownLeft", 0.3f}, {"browDownRight", 0.3f},   {"eyeWideLeft", 0.8f},
+              {"eyeWideRight", 0.8f}, {"mouthStretch", 0.6f},    {"jawOpen", 0.2f}};
     case Emotion::Disgust:
-      return {{"noseSneerLeft", 0.8f}, {"noseSneerRight", 0.8f}, {"mouthUpperUp", 0.6f},
+      return {{"noseSneerLeft", 0.8f},  {"noseSneerRight", 0.8f},  {"mouthUpperUp", 0.6f},
               {"mouthFrownLeft", 0.4f}, {"mouthFrownRight", 0.4f}, {"mouthLowerDown", 0.2f},
-              {"browDownLeft", 0.4f}, {"browDownRight", 0.4f}};
+              {"browDownLeft", 0.4f},   {"browDownRight", 0.4f}};
     case Emotion::Sleepy:
-      return {{"browOuterUpLeft", 0.2f}, {"browOuterUpRight", 0.2f}, {"eyeBlinkLeft", 0.45f},
+      return {{"browOuterUpLeft", 0.2f},
+              {"browOuterUpRight", 0.2f},
+              {"eyeBlinkLeft", 0.45f},
               {"eyeBlinkRight", 0.45f}};
     case Emotion::Neutral:
       break;

@@ -82,9 +82,8 @@ FaceRig face_rig_by_names(const skeleton::Skeleton& skeleton) {
   return rig;
 }
 
-bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton,
-                     const FaceRig& rig, const std::vector<FaceCue>& cues,
-                     const FaceOptions& options) {
+bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton, const FaceRig& rig,
+                     const std::vector<FaceCue>& cues, const FaceOptions& options) {
   const int joints = clip.joint_count();
   if (joints != skeleton.joint_count() || clip.frame_count < 0 ||
       clip.rotations.size() != std::size_t(clip.frame_count) * std::size_t(joints) ||
@@ -126,8 +125,9 @@ bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton,
     }
   }
   const double duration = clip.duration_s();
-  const std::vector<double> blinks =
-      options.blinks ? schedule_blinks(duration + dt, boundaries, options.seed) : std::vector<double>{};
+  const std::vector<double> blinks = options.blinks
+                                         ? schedule_blinks(duration + dt, boundaries, options.seed)
+                                         : std::vector<double>{};
 
   const glm::quat head_rest_world =
       rig.head >= 0 ? rest_world_rotation(skeleton, rig.head) : glm::quat(1, 0, 0, 0);
@@ -146,8 +146,8 @@ bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton,
     float intensity = options.intensity;
     if (cue && !cue->nonmanual.expression.empty() &&
         emotion_from_name(cue->nonmanual.expression, &emotion)) {
-      intensity = cue->nonmanual.expression_intensity > 0.0f ? cue->nonmanual.expression_intensity
-                                                             : 0.7f;
+      intensity =
+          cue->nonmanual.expression_intensity > 0.0f ? cue->nonmanual.expression_intensity : 0.7f;
     }
     const ChannelWeights emotion_target = emotion_weights(emotion, intensity);
     for (int c = 0; c < kChannelCount; ++c)
@@ -188,9 +188,8 @@ bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton,
         const int parent = skeleton.joints[std::size_t(rig.head)].parent;
         const glm::quat parent_world =
             parent >= 0 ? world_rotation(skeleton, locals, parent) : glm::quat(1, 0, 0, 0);
-        locals[rig.head] = glm::normalize(glm::inverse(parent_world) *
-                                          head_gesture_rotation(g, u) * parent_world *
-                                          locals[rig.head]);
+        locals[rig.head] = glm::normalize(glm::inverse(parent_world) * head_gesture_rotation(g, u) *
+                                          parent_world * locals[rig.head]);
       }
       // seed 002: eyes inherit the head, then counter-rotate to keep the gaze on the target.
       const glm::quat head_world = world_rotation(skeleton, locals, rig.head);

@@ -17,11 +17,11 @@
 
 namespace sw::face {
 
-struct FaceCue {               // one per sign (or pause) of the timeline
+struct FaceCue {  // one per sign (or pause) of the timeline
   double start_s = 0.0;
   double end_s = 0.0;
   notation::NonManual nonmanual;
-  bool is_pause = false;       // a prosodic boundary: signers blink here
+  bool is_pause = false;  // a prosodic boundary: signers blink here
 };
 
 struct FaceOptions {
@@ -29,8 +29,8 @@ struct FaceOptions {
   float intensity = 0.0f;           // 0..1
   bool mouthing = true;
   bool blinks = true;
-  std::uint32_t seed = 1;           // blink rhythm
-  float response_time_s = 0.25f;    // how fast the emotion layer follows a change
+  std::uint32_t seed = 1;         // blink rhythm
+  float response_time_s = 0.25f;  // how fast the emotion layer follows a change
 };
 
 // The joints the face layer moves; -1 where the avatar has none (then that part is skipped).
@@ -46,8 +46,7 @@ FaceRig face_rig_by_names(const skeleton::Skeleton& skeleton);
 // frame; layers head gestures and gaze onto the clip's head and eye rotations. The clip's
 // joint channels must be the skeleton's joints in order. Returns false (clip untouched) when the
 // clip and skeleton disagree.
-bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton,
-                     const FaceRig& rig, const std::vector<FaceCue>& cues,
-                     const FaceOptions& options);
+bool add_face_tracks(synthesis::Clip& clip, const skeleton::Skeleton& skeleton, const FaceRig& rig,
+                     const std::vector<FaceCue>& cues, const FaceOptions& options);
 
 }  // namespace sw::face

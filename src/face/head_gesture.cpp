@@ -19,9 +19,10 @@ HeadGesture head_gesture_from_name(std::string_view name) {
 
 glm::quat head_gesture_rotation(HeadGesture gesture, float u) {
   const float c = std::clamp(u, 0.0f, 1.0f);
-  const float envelope = std::sin(3.14159265f * c);            // 0 at both ends
+  const float envelope = std::sin(3.14159265f * c);             // 0 at both ends
   const float swing = std::sin(2.0f * 2.0f * 3.14159265f * c);  // two cycles
-  const float hold = ease_cosine(std::min(1.0f, 3.0f * c)) * ease_cosine(std::min(1.0f, 3.0f * (1.0f - c)));
+  const float hold =
+      ease_cosine(std::min(1.0f, 3.0f * c)) * ease_cosine(std::min(1.0f, 3.0f * (1.0f - c)));
   switch (gesture) {
     case HeadGesture::Nod:  // pitch about +X: positive bows the face down towards +Y->-Y
       return glm::angleAxis(0.22f * envelope * std::fabs(swing), glm::vec3(1, 0, 0));
@@ -45,7 +46,8 @@ glm::quat gaze_rotation(const glm::quat& head_world, const glm::vec3& look_dir,
                         float max_angle_rad) {
   // The eye's rest direction is the face's forward (+Z) carried by the head; we want the eye to
   // point along look_dir: the rotation, in the head's frame, from +Z to look_dir expressed there.
-  const glm::vec3 target_in_head = glm::normalize(glm::inverse(head_world) * glm::normalize(look_dir));
+  const glm::vec3 target_in_head =
+      glm::normalize(glm::inverse(head_world) * glm::normalize(look_dir));
   const glm::vec3 forward(0, 0, 1);
   float angle = std::acos(std::clamp(glm::dot(forward, target_in_head), -1.0f, 1.0f));
   glm::vec3 axis = glm::cross(forward, target_in_head);

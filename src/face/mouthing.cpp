@@ -14,14 +14,29 @@ std::uint32_t next_code_point(std::string_view s, std::size_t& i) {
   const auto c = static_cast<unsigned char>(s[i]);
   int extra = 0;
   std::uint32_t cp = c;
-  if (c >= 0xF0) { extra = 3; cp = c & 0x07; }
-  else if (c >= 0xE0) { extra = 2; cp = c & 0x0F; }
-  else if (c >= 0xC0) { extra = 1; cp = c & 0x1F; }
-  else if (c >= 0x80) { ++i; return 0xFFFD; }
-  if (extra > 0 && i + std::size_t(extra) >= s.size()) { ++i; return 0xFFFD; }
+  if (c >= 0xF0) {
+    extra = 3;
+    cp = c & 0x07;
+  } else if (c >= 0xE0) {
+    extra = 2;
+    cp = c & 0x0F;
+  } else if (c >= 0xC0) {
+    extra = 1;
+    cp = c & 0x1F;
+  } else if (c >= 0x80) {
+    ++i;
+    return 0xFFFD;
+  }
+  if (extra > 0 && i + std::size_t(extra) >= s.size()) {
+    ++i;
+    return 0xFFFD;
+  }
   for (int k = 1; k <= extra; ++k) {
     const auto cc = static_cast<unsigned char>(s[i + std::size_t(k)]);
-    if ((cc & 0xC0) != 0x80) { ++i; return 0xFFFD; }
+    if ((cc & 0xC0) != 0x80) {
+      ++i;
+      return 0xFFFD;
+    }
     cp = (cp << 6) | (cc & 0x3F);
   }
   i += std::size_t(extra) + 1;
@@ -32,20 +47,56 @@ std::uint32_t next_code_point(std::string_view s, std::size_t& i) {
 const char* cyrillic_viseme(std::uint32_t cp) {
   if (cp >= 0x0410 && cp <= 0x042F) cp += 0x20;  // upper -> lower (basic block)
   switch (cp) {
-    case 0x0430: case 0x044F: return "viseme_aa";                       // а я
-    case 0x0435: case 0x0454: case 0x044D: case 0x0451: return "viseme_E";  // е є э ё
-    case 0x0438: case 0x0456: case 0x0457: case 0x0439: case 0x044B: return "viseme_I";
-    case 0x043E: return "viseme_O";                                      // о
-    case 0x0443: case 0x044E: return "viseme_U";                         // у ю
-    case 0x043F: case 0x0431: case 0x043C: return "viseme_PP";           // п б м
-    case 0x0444: case 0x0432: return "viseme_FF";                        // ф в
-    case 0x0442: case 0x0434: return "viseme_DD";                        // т д
-    case 0x043A: case 0x0433: case 0x0491: case 0x0445: return "viseme_kk";  // к г ґ х
-    case 0x0447: case 0x0448: case 0x0449: case 0x0436: return "viseme_CH";  // ч ш щ ж
-    case 0x0441: case 0x0437: case 0x0446: return "viseme_SS";           // с з ц
-    case 0x043D: case 0x043B: return "viseme_nn";                        // н л
-    case 0x0440: return "viseme_RR";                                     // р
-    default: return nullptr;
+    case 0x0430:
+    case 0x044F:
+      return "viseme_aa";  // а я
+    case 0x0435:
+    case 0x0454:
+    case 0x044D:
+    case 0x0451:
+      return "viseme_E";  // е є э ё
+    case 0x0438:
+    case 0x0456:
+    case 0x0457:
+    case 0x0439:
+    case 0x044B:
+      return "viseme_I";
+    case 0x043E:
+      return "viseme_O";  // о
+    case 0x0443:
+    case 0x044E:
+      return "viseme_U";  // у ю
+    case 0x043F:
+    case 0x0431:
+    case 0x043C:
+      return "viseme_PP";  // п б м
+    case 0x0444:
+    case 0x0432:
+      return "viseme_FF";  // ф в
+    case 0x0442:
+    case 0x0434:
+      return "viseme_DD";  // т д
+    case 0x043A:
+    case 0x0433:
+    case 0x0491:
+    case 0x0445:
+      return "viseme_kk";  // к г ґ х
+    case 0x0447:
+    case 0x0448:
+    case 0x0449:
+    case 0x0436:
+      return "viseme_CH";  // ч ш щ ж
+    case 0x0441:
+    case 0x0437:
+    case 0x0446:
+      return "viseme_SS";  // с з ц
+    case 0x043D:
+    case 0x043B:
+      return "viseme_nn";  // н л
+    case 0x0440:
+      return "viseme_RR";  // р
+    default:
+      return nullptr;
   }
 }
 
@@ -53,22 +104,74 @@ const char* cyrillic_viseme(std::uint32_t cp) {
 // read as the vowel they write.
 const char* latin_viseme(char c) {
   switch (c) {
-    case 'a': case 'A': case '{': case 'V': return "viseme_aa";
-    case 'e': case 'E': case '@': case '3': return "viseme_E";
-    case 'i': case 'I': case 'y': case 'Y': case 'j': return "viseme_I";
-    case 'o': case 'O': case 'Q': return "viseme_O";
-    case 'u': case 'U': case 'w': case 'W': return "viseme_U";
-    case 'p': case 'P': case 'b': case 'B': case 'm': case 'M': return "viseme_PP";
-    case 'f': case 'F': case 'v': return "viseme_FF";
-    case 'T': case 'D': return "viseme_TH";
-    case 't': case 'd': return "viseme_DD";
-    case 'k': case 'K': case 'g': case 'G': case 'c': case 'C': case 'q': case 'x': case 'N':
+    case 'a':
+    case 'A':
+    case '{':
+    case 'V':
+      return "viseme_aa";
+    case 'e':
+    case 'E':
+    case '@':
+    case '3':
+      return "viseme_E";
+    case 'i':
+    case 'I':
+    case 'y':
+    case 'Y':
+    case 'j':
+      return "viseme_I";
+    case 'o':
+    case 'O':
+    case 'Q':
+      return "viseme_O";
+    case 'u':
+    case 'U':
+    case 'w':
+    case 'W':
+      return "viseme_U";
+    case 'p':
+    case 'P':
+    case 'b':
+    case 'B':
+    case 'm':
+    case 'M':
+      return "viseme_PP";
+    case 'f':
+    case 'F':
+    case 'v':
+      return "viseme_FF";
+    case 'T':
+    case 'D':
+      return "viseme_TH";
+    case 't':
+    case 'd':
+      return "viseme_DD";
+    case 'k':
+    case 'K':
+    case 'g':
+    case 'G':
+    case 'c':
+    case 'C':
+    case 'q':
+    case 'x':
+    case 'N':
       return "viseme_kk";
-    case 'S': case 'Z': case 'J': return "viseme_CH";
-    case 's': case 'z': return "viseme_SS";
-    case 'n': case 'l': case 'L': return "viseme_nn";
-    case 'r': case 'R': return "viseme_RR";
-    default: return nullptr;  // h, apostrophes, digits, punctuation: no distinct mouth shape
+    case 'S':
+    case 'Z':
+    case 'J':
+      return "viseme_CH";
+    case 's':
+    case 'z':
+      return "viseme_SS";
+    case 'n':
+    case 'l':
+    case 'L':
+      return "viseme_nn";
+    case 'r':
+    case 'R':
+      return "viseme_RR";
+    default:
+      return nullptr;  // h, apostrophes, digits, punctuation: no distinct mouth shape
   }
 }
 
@@ -96,14 +199,30 @@ std::vector<int> visemes_of_word(std::string_view text) {
       continue;
     }
     const char lower = static_cast<char>(std::tolower(c));
-    const char next = i + 1 < text.size() ? static_cast<char>(std::tolower(
-                                                 static_cast<unsigned char>(text[i + 1])))
-                                          : '\0';
+    const char next = i + 1 < text.size()
+                          ? static_cast<char>(std::tolower(static_cast<unsigned char>(text[i + 1])))
+                          : '\0';
     // Digraphs: English spelling th/sh/ch/ph/ng and SAMPA tS/dZ.
-    if (lower == 't' && next == 'h') { push("viseme_TH"); i += 2; continue; }
-    if ((lower == 's' || lower == 'c') && next == 'h') { push("viseme_CH"); i += 2; continue; }
-    if (lower == 'p' && next == 'h') { push("viseme_FF"); i += 2; continue; }
-    if (lower == 'n' && next == 'g') { push("viseme_kk"); i += 2; continue; }
+    if (lower == 't' && next == 'h') {
+      push("viseme_TH");
+      i += 2;
+      continue;
+    }
+    if ((lower == 's' || lower == 'c') && next == 'h') {
+      push("viseme_CH");
+      i += 2;
+      continue;
+    }
+    if (lower == 'p' && next == 'h') {
+      push("viseme_FF");
+      i += 2;
+      continue;
+    }
+    if (lower == 'n' && next == 'g') {
+      push("viseme_kk");
+      i += 2;
+      continue;
+    }
     if ((text[i] == 't' || text[i] == 'd') && i + 1 < text.size() &&
         (text[i + 1] == 'S' || text[i + 1] == 'Z')) {
       push("viseme_CH");

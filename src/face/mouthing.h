@@ -18,9 +18,9 @@
 namespace sw::face {
 
 struct VisemeKey {
-  int channel = -1;      // channel_index() of a viseme_* channel
-  double time_s = 0.0;   // peak time
-  float weight = 1.0f;   // peak weight (vowels open fully, consonants slightly less)
+  int channel = -1;     // channel_index() of a viseme_* channel
+  double time_s = 0.0;  // peak time
+  float weight = 1.0f;  // peak weight (vowels open fully, consonants slightly less)
 };
 
 // The viseme sequence of a word (no timing yet). Unknown characters are skipped; digraphs (th,

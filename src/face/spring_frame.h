@@ -2,11 +2,10 @@
 // joined by springs that stand in for muscles; an expression changes some springs' natural lengths
 // and the moving points relax to the equilibrium, showing the intermediate states on the way.
 //
-//   spring constant   1/k_i = sum_n (L_i(n) - l_si)^2 / n           (variability across expressions)
-//   force             F_i = -k_i (L_i - l_i)
-//   acceleration      m d2x/dt2 = sum_i F_i cos(theta_i), m d2y/dt2 = sum_i F_i sin(theta_i)
-//   update            x(t+1) = x(t) + alpha * sum d2x/dt2            until sum F -> 0
-//   expression        l_ci = (L_i(n) / l_si) * l_i
+//   spring constant   1/k_i = sum_n (L_i(n) - l_si)^2 / n           (variability across
+//   expressions) force             F_i = -k_i (L_i - l_i) acceleration      m d2x/dt2 = sum_i F_i
+//   cos(theta_i), m d2y/dt2 = sum_i F_i sin(theta_i) update            x(t+1) = x(t) + alpha * sum
+//   d2x/dt2            until sum F -> 0 expression        l_ci = (L_i(n) / l_si) * l_i
 //
 // The seed iterates positions directly with the force (no velocity state): a damped relaxation that
 // cannot overshoot for alpha * k < 1, which is why each spring's alpha*k is capped at 0.9 below.
@@ -26,8 +25,8 @@ struct SpringPoint {
 
 struct Spring {
   int a = 0, b = 0;
-  float k = 1.0f;              // spring constant
-  float natural_length = 0.0f; // l_i
+  float k = 1.0f;               // spring constant
+  float natural_length = 0.0f;  // l_i
 };
 
 // seed 003: 1/k = sum_n (L(n) - l_s)^2 / n. A spring that never changes length across the

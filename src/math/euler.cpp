@@ -3,9 +3,9 @@
 // For R = Ri(a) * Rj(b) * Rk(c) with (i, j, k) a permutation of the axes, let s = +1 when (i, j, k)
 // is cyclic (XYZ, YZX, ZXY) and s = -1 otherwise. Writing R[r][c] for row r, column c:
 //   row i of R is row i of Rj(b)*Rk(c), so  R[i][k] = s*sin b,  R[i][i]^2 + R[i][j]^2 = cos^2 b;
-//   column k of R is Ri(a) applied to Rj(b) e_k, so  -s*R[j][k] = sin a cos b,  R[k][k] = cos a cos b;
-//   with a known, M = Ri(-a) * R = Rj(b) * Rk(c), and row j of M is row j of Rk(c):
-//   s*M[j][i] = sin c, M[j][j] = cos c.
+//   column k of R is Ri(a) applied to Rj(b) e_k, so  -s*R[j][k] = sin a cos b,  R[k][k] = cos a cos
+//   b; with a known, M = Ri(-a) * R = Rj(b) * Rk(c), and row j of M is row j of Rk(c): s*M[j][i] =
+//   sin c, M[j][j] = cos c.
 // Taking c from M rather than from row i of R is what keeps the decomposition exact near gimbal
 // lock: whatever a is, c is the angle that makes Ri(a) Rj(b) Rk(c) equal R.
 // For ZYX this reduces to seed 004's φx = atan(t32/t33), φy = atan(−t31/sqrt(t11²+t21²)),
@@ -25,12 +25,18 @@ struct Axes {
 
 Axes axes_of(EulerOrder order) {
   switch (order) {
-    case EulerOrder::XYZ: return {0, 1, 2, 1.0};
-    case EulerOrder::XZY: return {0, 2, 1, -1.0};
-    case EulerOrder::YXZ: return {1, 0, 2, -1.0};
-    case EulerOrder::YZX: return {1, 2, 0, 1.0};
-    case EulerOrder::ZXY: return {2, 0, 1, 1.0};
-    case EulerOrder::ZYX: return {2, 1, 0, -1.0};
+    case EulerOrder::XYZ:
+      return {0, 1, 2, 1.0};
+    case EulerOrder::XZY:
+      return {0, 2, 1, -1.0};
+    case EulerOrder::YXZ:
+      return {1, 0, 2, -1.0};
+    case EulerOrder::YZX:
+      return {1, 2, 0, 1.0};
+    case EulerOrder::ZXY:
+      return {2, 0, 1, 1.0};
+    case EulerOrder::ZYX:
+      return {2, 1, 0, -1.0};
   }
   return {0, 1, 2, 1.0};
 }
@@ -79,12 +85,18 @@ glm::dvec3 decompose_with_first(const glm::dmat3& r, const Axes& x, double a) {
 
 const char* euler_order_name(EulerOrder order) {
   switch (order) {
-    case EulerOrder::XYZ: return "XYZ";
-    case EulerOrder::XZY: return "XZY";
-    case EulerOrder::YXZ: return "YXZ";
-    case EulerOrder::YZX: return "YZX";
-    case EulerOrder::ZXY: return "ZXY";
-    case EulerOrder::ZYX: return "ZYX";
+    case EulerOrder::XYZ:
+      return "XYZ";
+    case EulerOrder::XZY:
+      return "XZY";
+    case EulerOrder::YXZ:
+      return "YXZ";
+    case EulerOrder::YZX:
+      return "YZX";
+    case EulerOrder::ZXY:
+      return "ZXY";
+    case EulerOrder::ZYX:
+      return "ZYX";
   }
   return "XYZ";
 }
@@ -129,7 +141,8 @@ glm::dquat quat_from_euler(const glm::dvec3& angles_rad, EulerOrder order) {
 glm::dvec3 euler_from_matrix(const glm::dmat3& r, EulerOrder order) {
   const Axes x = axes_of(order);
   const double s = x.parity;
-  const double cos_b = std::sqrt(at(r, x.i, x.i) * at(r, x.i, x.i) + at(r, x.i, x.j) * at(r, x.i, x.j));
+  const double cos_b =
+      std::sqrt(at(r, x.i, x.i) * at(r, x.i, x.i) + at(r, x.i, x.j) * at(r, x.i, x.j));
   const double b = std::atan2(s * at(r, x.i, x.k), cos_b);
   double a = 0.0;  // gimbal lock: the first angle is 0 by choice, the third carries the rotation
   if (cos_b > kGimbalLockCos) a = std::atan2(-s * at(r, x.j, x.k), at(r, x.k, x.k));
@@ -142,11 +155,14 @@ glm::dvec3 euler_from_matrix(const glm::dmat3& r, EulerOrder order) {
   return angles;
 }
 
-glm::dvec3 euler_from_quat_near(const glm::dquat& rotation, EulerOrder order, const glm::dvec3& reference) {
+glm::dvec3 euler_from_quat_near(const glm::dquat& rotation, EulerOrder order,
+                                const glm::dvec3& reference) {
   constexpr double kTwoPi = 6.283185307179586;
   const Axes x = axes_of(order);
   const glm::dmat3 r = glm::mat3_cast(glm::normalize(rotation));
-  const auto nearest_turn = [&](double angle, double ref) { return angle + kTwoPi * std::round((ref - angle) / kTwoPi); };
+  const auto nearest_turn = [&](double angle, double ref) {
+    return angle + kTwoPi * std::round((ref - angle) / kTwoPi);
+  };
   const auto shifted = [&](glm::dvec3 angles) {
     for (int axis = 0; axis < 3; ++axis) angles[axis] = nearest_turn(angles[axis], reference[axis]);
     return angles;

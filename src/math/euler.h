@@ -1,17 +1,20 @@
 // Euler angles in the six Tait-Bryan orders, to and from quaternions and rotation matrices.
 //
 // Convention (the BVH one, seed 004 §"Skeleton"): the order names the rotations as composed left to
-// right. Order XYZ means R = Rx(x) * Ry(y) * Rz(z) acting on column vectors, which is how a BVH file
-// listing "Xrotation Yrotation Zrotation" is read: rotate about the parent's X, then the new Y, then
-// the newer Z (intrinsic), equivalently Z first in fixed axes.
+// right. Order XYZ means R = Rx(x) * Ry(y) * Rz(z) acting on column vectors, which is how a BVH
+// file listing "Xrotation Yrotation Zrotation" is read: rotate about the parent's X, then the new
+// Y, then the newer Z (intrinsic), equivalently Z first in fixed axes.
 //
-// Angles are always stored per axis — angles.x is the angle about X whatever the order — in radians.
+// Angles are always stored per axis — angles.x is the angle about X whatever the order — in
+// radians.
 //
 // Gimbal lock: when the middle angle is ±90°, the first and third axes coincide and only their sum
-// (or difference) is determined. The decomposition then sets the first angle to 0 and puts the whole
-// rotation into the third, so the result is deterministic and reproduces the rotation exactly.
+// (or difference) is determined. The decomposition then sets the first angle to 0 and puts the
+// whole rotation into the third, so the result is deterministic and reproduces the rotation
+// exactly.
 //
-// Does not: handle proper Euler orders (XYX, ZXZ ...) — BVH and the seed use only Tait-Bryan orders.
+// Does not: handle proper Euler orders (XYX, ZXZ ...) — BVH and the seed use only Tait-Bryan
+// orders.
 #pragma once
 
 #include <optional>
@@ -48,7 +51,8 @@ glm::dvec3 euler_from_quat(const glm::dquat& rotation, EulerOrder order);
 // the one nearest the reference; at gimbal lock the first angle is the reference's. Angles are then
 // not limited to (-pi, pi]: an animation turning through 180° keeps turning instead of flipping,
 // which BVH players (interpolating angles) need.
-glm::dvec3 euler_from_quat_near(const glm::dquat& rotation, EulerOrder order, const glm::dvec3& reference);
+glm::dvec3 euler_from_quat_near(const glm::dquat& rotation, EulerOrder order,
+                                const glm::dvec3& reference);
 
 // Single precision: what the runtime (Transform, Clip) stores. Computed in double internally.
 glm::mat3 matrix_from_euler(const glm::vec3& angles_rad, EulerOrder order);

@@ -36,9 +36,12 @@ inline Float4 load3(const glm::vec3& v) { return Float4{v.x, v.y, v.z, 0.0f}; }
 inline Float4 quat_mul(Float4 p, Float4 q) {
   const Float4 minus_w{1.0f, 1.0f, 1.0f, -1.0f};
   const Float4 t1 = __builtin_shufflevector(p, p, 3, 3, 3, 3) * q;
-  const Float4 t2 = __builtin_shufflevector(p, p, 0, 1, 2, 0) * __builtin_shufflevector(q, q, 3, 3, 3, 0) * minus_w;
-  const Float4 t3 = __builtin_shufflevector(p, p, 1, 2, 0, 1) * __builtin_shufflevector(q, q, 2, 0, 1, 1) * minus_w;
-  const Float4 t4 = __builtin_shufflevector(p, p, 2, 0, 1, 2) * __builtin_shufflevector(q, q, 1, 2, 0, 2);
+  const Float4 t2 = __builtin_shufflevector(p, p, 0, 1, 2, 0) *
+                    __builtin_shufflevector(q, q, 3, 3, 3, 0) * minus_w;
+  const Float4 t3 = __builtin_shufflevector(p, p, 1, 2, 0, 1) *
+                    __builtin_shufflevector(q, q, 2, 0, 1, 1) * minus_w;
+  const Float4 t4 =
+      __builtin_shufflevector(p, p, 2, 0, 1, 2) * __builtin_shufflevector(q, q, 1, 2, 0, 2);
   return ((t1 + t2) + t3) - t4;
 }
 

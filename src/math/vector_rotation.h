@@ -3,10 +3,10 @@
 // of the seed turns each bone's old and new direction into these angles.
 //
 // The seed's printed t-terms are garbled, so this derives it: the shortest rotation about the axis
-// r1 × r2 by the angle between them, then its Euler decomposition (math/euler.h) in the order asked.
-// Degenerate pairs: parallel → identity; opposite → 180° about an axis perpendicular to r1 (there
-// are infinitely many; the one chosen is perpendicular to r1 and to the coordinate axis least aligned
-// with r1, so the choice is deterministic and well conditioned).
+// r1 × r2 by the angle between them, then its Euler decomposition (math/euler.h) in the order
+// asked. Degenerate pairs: parallel → identity; opposite → 180° about an axis perpendicular to r1
+// (there are infinitely many; the one chosen is perpendicular to r1 and to the coordinate axis
+// least aligned with r1, so the choice is deterministic and well conditioned).
 #pragma once
 
 #include <glm/glm.hpp>

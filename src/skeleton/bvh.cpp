@@ -15,12 +15,18 @@ int axis_of(BvhChannel c) { return static_cast<int>(c) % 3; }
 
 const char* bvh_channel_name(BvhChannel channel) {
   switch (channel) {
-    case BvhChannel::Xposition: return "Xposition";
-    case BvhChannel::Yposition: return "Yposition";
-    case BvhChannel::Zposition: return "Zposition";
-    case BvhChannel::Xrotation: return "Xrotation";
-    case BvhChannel::Yrotation: return "Yrotation";
-    case BvhChannel::Zrotation: return "Zrotation";
+    case BvhChannel::Xposition:
+      return "Xposition";
+    case BvhChannel::Yposition:
+      return "Yposition";
+    case BvhChannel::Zposition:
+      return "Zposition";
+    case BvhChannel::Xrotation:
+      return "Xrotation";
+    case BvhChannel::Yrotation:
+      return "Yrotation";
+    case BvhChannel::Zrotation:
+      return "Zrotation";
   }
   return "Xrotation";
 }
@@ -113,9 +119,13 @@ bool frame_to_local(const Bvh& bvh, int frame, double scale_to_m, math::Span<mat
   return true;
 }
 
-bool local_to_frame(math::Span<const math::Transform> local, double scale_to_m, Bvh& bvh, int frame) {
-  if (frame < 0 || frame >= bvh.frame_count || local.size < bvh.joints.size() || !(scale_to_m != 0.0)) return false;
-  if (bvh.values.size() < std::size_t(bvh.frame_count) * std::size_t(bvh.channel_count())) return false;
+bool local_to_frame(math::Span<const math::Transform> local, double scale_to_m, Bvh& bvh,
+                    int frame) {
+  if (frame < 0 || frame >= bvh.frame_count || local.size < bvh.joints.size() ||
+      !(scale_to_m != 0.0))
+    return false;
+  if (bvh.values.size() < std::size_t(bvh.frame_count) * std::size_t(bvh.channel_count()))
+    return false;
   double* values = bvh.frame(frame);
   int channel = 0;
   for (std::size_t i = 0; i < bvh.joints.size(); ++i) {
@@ -127,13 +137,15 @@ bool local_to_frame(math::Span<const math::Transform> local, double scale_to_m, 
     if (frame > 0) {
       const double* before = bvh.frame(frame - 1) + (channel);
       for (std::size_t c = 0; c < j.channels.size(); ++c) {
-        if (is_rotation(j.channels[c])) previous_rad[axis_of(j.channels[c])] = before[c] / kDegreesPerRadian;
+        if (is_rotation(j.channels[c]))
+          previous_rad[axis_of(j.channels[c])] = before[c] / kDegreesPerRadian;
       }
     }
     const glm::dvec3 angles_rad =
         math::euler_from_quat_near(glm::dquat(local[i].rotation), j.rotation_order(), previous_rad);
     for (BvhChannel c : j.channels) {
-      values[channel++] = is_rotation(c) ? angles_rad[axis_of(c)] * kDegreesPerRadian : position[axis_of(c)];
+      values[channel++] =
+          is_rotation(c) ? angles_rad[axis_of(c)] * kDegreesPerRadian : position[axis_of(c)];
     }
   }
   return true;

@@ -52,10 +52,11 @@ const char* bvh_channel_name(BvhChannel channel);
 
 struct BvhJoint {
   std::string name;
-  int parent = -1;                   // index into Bvh::joints, -1 for a ROOT
-  glm::dvec3 offset{0.0};            // OFFSET, in the file's unit
-  std::vector<BvhChannel> channels;  // as listed by CHANNELS (3 rotations, or 3 positions + 3 rotations)
-  bool has_end_site = false;         // an "End Site { OFFSET ... }" child block
+  int parent = -1;         // index into Bvh::joints, -1 for a ROOT
+  glm::dvec3 offset{0.0};  // OFFSET, in the file's unit
+  std::vector<BvhChannel>
+      channels;               // as listed by CHANNELS (3 rotations, or 3 positions + 3 rotations)
+  bool has_end_site = false;  // an "End Site { OFFSET ... }" child block
   glm::dvec3 end_site_offset{0.0};
 
   // The order its rotation channels are listed in (math/euler.h convention).
@@ -78,8 +79,12 @@ struct Bvh {
   // Index of the joint's first channel within a frame.
   int channel_offset(int joint) const;
   // Pointer to one frame's channel_count() values.
-  const double* frame(int index) const { return values.data() + std::size_t(index) * std::size_t(channel_count()); }
-  double* frame(int index) { return values.data() + std::size_t(index) * std::size_t(channel_count()); }
+  const double* frame(int index) const {
+    return values.data() + std::size_t(index) * std::size_t(channel_count());
+  }
+  double* frame(int index) {
+    return values.data() + std::size_t(index) * std::size_t(channel_count());
+  }
   int find(std::string_view name) const;
 };
 
@@ -91,8 +96,8 @@ struct BvhError {
 };
 
 struct BvhReadResult {
-  Bvh bvh;          // valid only when ok
-  BvhError error;   // set when !ok
+  Bvh bvh;         // valid only when ok
+  BvhError error;  // set when !ok
   bool ok = false;
 };
 
@@ -120,6 +125,7 @@ bool frame_to_local(const Bvh& bvh, int frame, double scale_to_m, math::Span<mat
 // The inverse: fills one frame's channels from local transforms (translation goes to position
 // channels where the joint has them; rotation to Euler angles in the joint's channel order, chosen
 // nearest the previous frame's angles so that tracks stay continuous — fill frames in order).
-bool local_to_frame(math::Span<const math::Transform> local, double scale_to_m, Bvh& bvh, int frame);
+bool local_to_frame(math::Span<const math::Transform> local, double scale_to_m, Bvh& bvh,
+                    int frame);
 
 }  // namespace sw::skeleton

@@ -2,11 +2,11 @@
 // limits). A hand-written recursive-descent parser over whitespace-separated tokens for HIERARCHY,
 // then strictly one frame per line for MOTION, so that a short or long frame is reported on its
 // own line.
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -20,7 +20,9 @@ struct Token {
   int line = 0;
 };
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+}
 
 class Lexer {
  public:
@@ -102,14 +104,16 @@ std::string quoted(std::string_view s) {
 }
 
 std::optional<BvhChannel> parse_channel(std::string_view s) {
-  static constexpr BvhChannel kAll[] = {BvhChannel::Xposition, BvhChannel::Yposition, BvhChannel::Zposition,
-                                        BvhChannel::Xrotation, BvhChannel::Yrotation, BvhChannel::Zrotation};
+  static constexpr BvhChannel kAll[] = {BvhChannel::Xposition, BvhChannel::Yposition,
+                                        BvhChannel::Zposition, BvhChannel::Xrotation,
+                                        BvhChannel::Yrotation, BvhChannel::Zrotation};
   for (BvhChannel c : kAll) {
     const std::string_view name = bvh_channel_name(c);
     if (name.size() != s.size()) continue;
     bool same = true;
     for (std::size_t i = 0; i < s.size() && same; ++i) {
-      same = std::tolower(static_cast<unsigned char>(s[i])) == std::tolower(static_cast<unsigned char>(name[i]));
+      same = std::tolower(static_cast<unsigned char>(s[i])) ==
+             std::tolower(static_cast<unsigned char>(name[i]));
     }
     if (same) return c;
   }
@@ -147,10 +151,12 @@ class Parser {
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
     if (end == s.c_str() || *end != '\0') {
-      return fail(t.line, std::string("expected a number for ") + what + ", found " + quoted(t.text));
+      return fail(t.line,
+                  std::string("expected a number for ") + what + ", found " + quoted(t.text));
     }
     if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0)) {
-      return fail(t.line, std::string("the ") + what + " " + quoted(t.text) + " is not a finite number");
+      return fail(t.line,
+                  std::string("the ") + what + " " + quoted(t.text) + " is not a finite number");
     }
     if (std::fabs(v) > Bvh::kMaxMagnitude) {
       return fail(t.line, std::string("the ") + what + " " + quoted(t.text) +
@@ -164,7 +170,8 @@ class Parser {
     const std::optional<Token> t = lex_.next();
     if (!t) return fail_at_end(std::string("'") + keyword + "' " + context);
     if (t->text != keyword) {
-      return fail(t->line, std::string("expected '") + keyword + "' " + context + ", found " + quoted(t->text));
+      return fail(t->line, std::string("expected '") + keyword + "' " + context + ", found " +
+                               quoted(t->text));
     }
     if (where) *where = *t;
     return true;
@@ -174,14 +181,16 @@ class Parser {
     const std::optional<Token> first = lex_.next();
     if (!first) return fail(1, "empty file: a BVH file starts with HIERARCHY");
     if (first->text != "HIERARCHY") {
-      return fail(first->line, "expected 'HIERARCHY' at the start of the file, found " + quoted(first->text));
+      return fail(first->line,
+                  "expected 'HIERARCHY' at the start of the file, found " + quoted(first->text));
     }
     for (;;) {
       const std::optional<Token> t = lex_.peek();
       if (!t) return fail_at_end("'ROOT' or 'MOTION'");
       if (t->text == "MOTION") break;
       if (t->text != "ROOT") {
-        return fail(t->line, "unknown keyword " + quoted(t->text) + " in HIERARCHY (expected 'ROOT' or 'MOTION')");
+        return fail(t->line, "unknown keyword " + quoted(t->text) +
+                                 " in HIERARCHY (expected 'ROOT' or 'MOTION')");
       }
       lex_.next();
       if (!parse_joint(-1, *t)) return false;
@@ -194,11 +203,13 @@ class Parser {
   bool parse_joint(int parent, const Token& keyword) {
     const std::optional<Token> name = lex_.next();
     if (!name) return fail_at_end("a joint name after " + quoted(keyword.text));
-    if (name->text == "{") return fail(name->line, "missing joint name after " + quoted(keyword.text));
+    if (name->text == "{")
+      return fail(name->line, "missing joint name after " + quoted(keyword.text));
     if (static_cast<int>(bvh_.joints.size()) >= Bvh::kMaxJoints) {
       return fail(name->line, "more than 1024 joints (the limit: real rigs have a few hundred)");
     }
-    if (bvh_.find(name->text) >= 0) return fail(name->line, "duplicate joint name " + quoted(name->text));
+    if (bvh_.find(name->text) >= 0)
+      return fail(name->line, "duplicate joint name " + quoted(name->text));
     const int index = static_cast<int>(bvh_.joints.size());
     BvhJoint joint;
     joint.name = std::string(name->text);
@@ -212,8 +223,9 @@ class Parser {
     for (;;) {
       const std::optional<Token> t = lex_.next();
       if (!t) {
-        return fail(lex_.line(), "unexpected end of file: missing '}' closing joint " + quoted(name->text) +
-                                     " (opened on line " + std::to_string(open.line) + ")");
+        return fail(lex_.line(), "unexpected end of file: missing '}' closing joint " +
+                                     quoted(name->text) + " (opened on line " +
+                                     std::to_string(open.line) + ")");
       }
       if (t->text == "}") break;
       if (t->text == "OFFSET") {
@@ -228,14 +240,16 @@ class Parser {
         has_channels = true;
       } else if (t->text == "JOINT") {
         if (!has_offset || !has_channels) {
-          return fail(t->line, "JOINT before the OFFSET and CHANNELS of its parent " + quoted(name->text));
+          return fail(t->line,
+                      "JOINT before the OFFSET and CHANNELS of its parent " + quoted(name->text));
         }
         if (!parse_joint(index, *t)) return false;
       } else if (t->text == "End") {
         if (!parse_end_site(index)) return false;
       } else if (t->text == "ROOT" || t->text == "MOTION") {
-        return fail(t->line, "missing '}' closing joint " + quoted(name->text) + " (opened on line " +
-                                 std::to_string(open.line) + ") before " + quoted(t->text));
+        return fail(t->line, "missing '}' closing joint " + quoted(name->text) +
+                                 " (opened on line " + std::to_string(open.line) + ") before " +
+                                 quoted(t->text));
       } else {
         return fail(t->line, "unknown keyword " + quoted(t->text) + " " + in_joint +
                                  " (expected OFFSET, CHANNELS, JOINT, End Site or '}')");
@@ -264,11 +278,13 @@ class Parser {
     char* end = nullptr;
     const long count = std::strtol(count_text.c_str(), &end, 10);
     if (end == count_text.c_str() || *end != '\0') {
-      return fail(count_token->line, "expected a channel count after CHANNELS, found " + quoted(count_token->text));
+      return fail(count_token->line,
+                  "expected a channel count after CHANNELS, found " + quoted(count_token->text));
     }
     if (count != 3 && count != 6) {
-      return fail(count_token->line, "joint " + quoted(joint.name) + " declares " + count_text +
-                                         " channels; a BVH joint has 3 (rotations) or 6 (positions and rotations)");
+      return fail(count_token->line,
+                  "joint " + quoted(joint.name) + " declares " + count_text +
+                      " channels; a BVH joint has 3 (rotations) or 6 (positions and rotations)");
     }
     int rotations = 0;
     bool seen[6] = {false, false, false, false, false, false};
@@ -277,24 +293,28 @@ class Parser {
       if (!t) return fail_at_end(std::to_string(count) + " channel names after CHANNELS");
       const std::optional<BvhChannel> channel = parse_channel(t->text);
       if (!channel) {
-        return fail(t->line, "CHANNELS " + count_text + " of joint " + quoted(joint.name) + " lists " +
-                                 std::to_string(i) + " channel names, then " + quoted(t->text) +
-                                 " (channel names are Xposition ... Zrotation)");
+        return fail(t->line, "CHANNELS " + count_text + " of joint " + quoted(joint.name) +
+                                 " lists " + std::to_string(i) + " channel names, then " +
+                                 quoted(t->text) + " (channel names are Xposition ... Zrotation)");
       }
       lex_.next();
       const int c = static_cast<int>(*channel);
-      if (seen[c]) return fail(t->line, "channel " + quoted(t->text) + " listed twice in joint " + quoted(joint.name));
+      if (seen[c])
+        return fail(t->line,
+                    "channel " + quoted(t->text) + " listed twice in joint " + quoted(joint.name));
       seen[c] = true;
       if (c >= 3) ++rotations;
       joint.channels.push_back(*channel);
     }
     if (rotations != 3) {
-      return fail(keyword.line, "joint " + quoted(joint.name) + " must list all three rotation channels");
+      return fail(keyword.line,
+                  "joint " + quoted(joint.name) + " must list all three rotation channels");
     }
-    if (const std::optional<Token> extra = lex_.peek(); extra && extra->line == keyword.line &&
-                                                        parse_channel(extra->text)) {
-      return fail(extra->line, "joint " + quoted(joint.name) + " lists more channel names than CHANNELS " +
-                                   count_text + " declares");
+    if (const std::optional<Token> extra = lex_.peek();
+        extra && extra->line == keyword.line && parse_channel(extra->text)) {
+      return fail(extra->line, "joint " + quoted(joint.name) +
+                                   " lists more channel names than CHANNELS " + count_text +
+                                   " declares");
     }
     return true;
   }
@@ -303,7 +323,8 @@ class Parser {
     BvhJoint& joint = bvh_.joints[static_cast<std::size_t>(parent)];
     const std::string context = "in the End Site of joint " + quoted(joint.name);
     if (!expect("Site", "after 'End'")) return false;
-    if (joint.has_end_site) return fail(lex_.line(), "second End Site in joint " + quoted(joint.name));
+    if (joint.has_end_site)
+      return fail(lex_.line(), "second End Site in joint " + quoted(joint.name));
     if (!expect("{", "after 'End Site'")) return false;
     if (!expect("OFFSET", context)) return false;
     glm::dvec3 offset;
@@ -326,7 +347,8 @@ class Parser {
     errno = 0;
     const long long frame_count = std::strtoll(frames_text.c_str(), &end, 10);
     if (end == frames_text.c_str() || *end != '\0' || errno == ERANGE || frame_count < 0) {
-      return fail(frames->line, "expected a non-negative whole number of frames, found " + quoted(frames->text));
+      return fail(frames->line,
+                  "expected a non-negative whole number of frames, found " + quoted(frames->text));
     }
     const std::size_t channels = static_cast<std::size_t>(bvh_.channel_count());
     if (static_cast<unsigned long long>(frame_count) > Bvh::kMaxValues / channels) {
@@ -338,7 +360,8 @@ class Parser {
     const std::optional<Token> time = lex_.next();
     if (!time) return fail_at_end("the frame time after 'Frame Time:'");
     if (!number(*time, "frame time", bvh_.frame_time_s)) return false;
-    if (!(bvh_.frame_time_s > 0.0)) return fail(time->line, "the frame time must be positive, found " + quoted(time->text));
+    if (!(bvh_.frame_time_s > 0.0))
+      return fail(time->line, "the frame time must be positive, found " + quoted(time->text));
     Token stray;
     if (!lex_.finish_line(stray)) {
       return fail(stray.line, "unexpected " + quoted(stray.text) + " after the frame time");
@@ -347,7 +370,8 @@ class Parser {
     bvh_.frame_count = static_cast<int>(frame_count);
     // Values are appended as frames are read rather than allocated from the declared count, so a
     // forged "Frames:" in a short file costs nothing.
-    bvh_.values.reserve(std::min<std::size_t>(static_cast<std::size_t>(frame_count) * channels, std::size_t{1} << 20));
+    bvh_.values.reserve(std::min<std::size_t>(static_cast<std::size_t>(frame_count) * channels,
+                                              std::size_t{1} << 20));
     std::vector<double> row(channels);
     std::string_view line_text;
     int line = 0;
@@ -381,8 +405,9 @@ class Parser {
       ++frame;
     }
     if (frame < frame_count) {
-      return fail(line > 0 ? line : lex_.line(), "truncated: 'Frames: " + frames_text + "' but the file ends after " +
-                                                      std::to_string(frame) + " frames");
+      return fail(line > 0 ? line : lex_.line(), "truncated: 'Frames: " + frames_text +
+                                                     "' but the file ends after " +
+                                                     std::to_string(frame) + " frames");
     }
     return true;
   }

@@ -18,7 +18,8 @@ class Writer {
     children_.resize(bvh.joints.size());
     for (std::size_t i = 0; i < bvh.joints.size(); ++i) {
       const int p = bvh.joints[i].parent;
-      if (p >= 0 && static_cast<std::size_t>(p) < bvh.joints.size()) children_[static_cast<std::size_t>(p)].push_back(static_cast<int>(i));
+      if (p >= 0 && static_cast<std::size_t>(p) < bvh.joints.size())
+        children_[static_cast<std::size_t>(p)].push_back(static_cast<int>(i));
     }
   }
 
@@ -38,7 +39,8 @@ class Writer {
       bool first = true;
       for (int joint : file_order_) {
         const int offset = bvh_.channel_offset(joint);
-        const int count = static_cast<int>(bvh_.joints[static_cast<std::size_t>(joint)].channels.size());
+        const int count =
+            static_cast<int>(bvh_.joints[static_cast<std::size_t>(joint)].channels.size());
         for (int c = 0; c < count && offset + c < channels; ++c) {
           if (!first) out_ += ' ';
           out_ += number(values[offset + c]);
@@ -102,6 +104,8 @@ class Writer {
 
 }  // namespace
 
-std::string write_bvh(const Bvh& bvh, const BvhWriteOptions& options) { return Writer(bvh, options).write(); }
+std::string write_bvh(const Bvh& bvh, const BvhWriteOptions& options) {
+  return Writer(bvh, options).write();
+}
 
 }  // namespace sw::skeleton

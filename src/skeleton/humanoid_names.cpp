@@ -56,7 +56,10 @@ std::string normalise(std::string_view name) {
     bool is_prefix = false;
     if (i == 0) {
       for (std::string_view prefix : kRigPrefixes) {
-        if (token == prefix) { is_prefix = true; break; }
+        if (token == prefix) {
+          is_prefix = true;
+          break;
+        }
         // "mixamorigLeftArm", "Bip01Spine": a prefix glued to the rest.
         if (token.size() > prefix.size() && token.compare(0, prefix.size(), prefix) == 0 &&
             (prefix == "mixamorig" || prefix == "bip01" || prefix == "bip001")) {
@@ -66,8 +69,14 @@ std::string normalise(std::string_view name) {
       }
     }
     if (is_prefix) continue;
-    if (side.empty() && (token == "l" || token == "left")) { side = "left"; continue; }
-    if (side.empty() && (token == "r" || token == "right")) { side = "right"; continue; }
+    if (side.empty() && (token == "l" || token == "left")) {
+      side = "left";
+      continue;
+    }
+    if (side.empty() && (token == "r" || token == "right")) {
+      side = "right";
+      continue;
+    }
     for (char c : token) {
       if (std::isalnum(static_cast<unsigned char>(c))) body.push_back(c);
     }
@@ -84,22 +93,49 @@ struct Alias {
 
 constexpr Alias kAliases[] = {
     // Torso and head: Mixamo, cgspeed/CMU BVH, Biped, Unreal.
-    {"pelvis", "hips"}, {"hip", "hips"},
-    {"spine1", "chest"}, {"spine2", "upperChest"},
-    {"spine01", "spine"}, {"spine02", "chest"}, {"spine03", "upperChest"},
-    {"lowerback", "spine"}, {"upperback", "chest"}, {"thorax", "upperChest"},
-    {"lowerneck", "neck"}, {"neck01", "neck"}, {"neck1", "neck"},
+    {"pelvis", "hips"},
+    {"hip", "hips"},
+    {"spine1", "chest"},
+    {"spine2", "upperChest"},
+    {"spine01", "spine"},
+    {"spine02", "chest"},
+    {"spine03", "upperChest"},
+    {"lowerback", "spine"},
+    {"upperback", "chest"},
+    {"thorax", "upperChest"},
+    {"lowerneck", "neck"},
+    {"neck01", "neck"},
+    {"neck1", "neck"},
     // Arms.
-    {"@arm", "@UpperArm"}, {"@forearm", "@LowerArm"}, {"@shoulder", "@Shoulder"},
-    {"@clavicle", "@Shoulder"}, {"@collar", "@Shoulder"}, {"@elbow", "@LowerArm"},
-    {"@wrist", "@Hand"}, {"#clavicle", "@Shoulder"}, {"#humerus", "@UpperArm"},
-    {"#radius", "@LowerArm"}, {"#hand", "@Hand"}, {"#thumb", "@ThumbMetacarpal"},
+    {"@arm", "@UpperArm"},
+    {"@forearm", "@LowerArm"},
+    {"@shoulder", "@Shoulder"},
+    {"@clavicle", "@Shoulder"},
+    {"@collar", "@Shoulder"},
+    {"@elbow", "@LowerArm"},
+    {"@wrist", "@Hand"},
+    {"#clavicle", "@Shoulder"},
+    {"#humerus", "@UpperArm"},
+    {"#radius", "@LowerArm"},
+    {"#hand", "@Hand"},
+    {"#thumb", "@ThumbMetacarpal"},
     // Legs.
-    {"@upleg", "@UpperLeg"}, {"@leg", "@LowerLeg"}, {"@thigh", "@UpperLeg"},
-    {"@calf", "@LowerLeg"}, {"@shin", "@LowerLeg"}, {"@knee", "@LowerLeg"},
-    {"@hip", "@UpperLeg"}, {"@ankle", "@Foot"}, {"@toebase", "@Toes"}, {"@toe", "@Toes"},
-    {"@toe0", "@Toes"}, {"@ball", "@Toes"}, {"#femur", "@UpperLeg"}, {"#tibia", "@LowerLeg"},
-    {"#foot", "@Foot"}, {"#toes", "@Toes"},
+    {"@upleg", "@UpperLeg"},
+    {"@leg", "@LowerLeg"},
+    {"@thigh", "@UpperLeg"},
+    {"@calf", "@LowerLeg"},
+    {"@shin", "@LowerLeg"},
+    {"@knee", "@LowerLeg"},
+    {"@hip", "@UpperLeg"},
+    {"@ankle", "@Foot"},
+    {"@toebase", "@Toes"},
+    {"@toe", "@Toes"},
+    {"@toe0", "@Toes"},
+    {"@ball", "@Toes"},
+    {"#femur", "@UpperLeg"},
+    {"#tibia", "@LowerLeg"},
+    {"#foot", "@Foot"},
+    {"#toes", "@Toes"},
 };
 
 void add_expanded(std::unordered_map<std::string, int>& table, std::string_view pattern,
@@ -111,9 +147,12 @@ void add_expanded(std::unordered_map<std::string, int>& table, std::string_view 
   for (int s = 0; s < 2; ++s) {
     std::string key;
     for (char c : pattern) {
-      if (c == '@') key += s == 0 ? "left" : "right";
-      else if (c == '#') key += s == 0 ? "l" : "r";
-      else key.push_back(c);
+      if (c == '@')
+        key += s == 0 ? "left" : "right";
+      else if (c == '#')
+        key += s == 0 ? "l" : "r";
+      else
+        key.push_back(c);
     }
     table.emplace(squash(key), s == 0 ? left_id : right_id);
   }
@@ -130,21 +169,26 @@ const std::unordered_map<std::string, int>& alias_table() {
   static const std::unordered_map<std::string, int> table = [] {
     std::unordered_map<std::string, int> t;
     // Canonical names first so they win over any alias (emplace keeps the first).
-    for (int i = 0; i < kHumanoidJointCount; ++i) t.emplace(squash(kNames[static_cast<std::size_t>(i)]), i);
+    for (int i = 0; i < kHumanoidJointCount; ++i)
+      t.emplace(squash(kNames[static_cast<std::size_t>(i)]), i);
     for (const Alias& alias : kAliases) {
       const std::string_view c = alias.canonical;
       if (!c.empty() && c[0] == '@') {
         const std::string rest(c.substr(1));
-        add_expanded(t, alias.pattern, id_of_canonical("left" + rest), id_of_canonical("right" + rest), true);
+        add_expanded(t, alias.pattern, id_of_canonical("left" + rest),
+                     id_of_canonical("right" + rest), true);
       } else {
         add_expanded(t, alias.pattern, id_of_canonical(c), -1, false);
       }
     }
     // Fingers, generated per convention. Segments 0..4: metacarpal, proximal, intermediate,
     // distal, tip; numbered joints count from the first bone each rig has.
-    const std::array<std::array<std::string_view, 3>, kFingerCount> finger_words = {{
-        {"thumb", "thumb", "thumb"}, {"index", "index", "index"}, {"middle", "middle", "middle"},
-        {"ring", "ring", "ring"}, {"little", "pinky", "pinkie"}}};
+    const std::array<std::array<std::string_view, 3>, kFingerCount> finger_words = {
+        {{"thumb", "thumb", "thumb"},
+         {"index", "index", "index"},
+         {"middle", "middle", "middle"},
+         {"ring", "ring", "ring"},
+         {"little", "pinky", "pinkie"}}};
     for (int side = 0; side < 2; ++side) {
       const bool left = side == 0;
       const std::string s = left ? "left" : "right";
@@ -163,19 +207,21 @@ const std::unordered_map<std::string, int>& alias_table() {
           for (int k = 0; k < 4; ++k) {
             const int id = finger_joint_id(left, finger, numbered[static_cast<std::size_t>(k)]);
             const std::string n = std::to_string(k + 1);
-            t.emplace(s + "hand" + w + n, id);        // Mixamo, cgspeed BVH: LeftHandIndex1
-            t.emplace(s + w + n, id);                 // leftIndex1
-            t.emplace(s + w + "0" + n, id);           // Unreal index_01_l, Rigify thumb.01.L
-            t.emplace(s + "f" + w + "0" + n, id);     // Rigify f_index.01.L
+            t.emplace(s + "hand" + w + n, id);     // Mixamo, cgspeed BVH: LeftHandIndex1
+            t.emplace(s + w + n, id);              // leftIndex1
+            t.emplace(s + w + "0" + n, id);        // Unreal index_01_l, Rigify thumb.01.L
+            t.emplace(s + "f" + w + "0" + n, id);  // Rigify f_index.01.L
           }
           t.emplace(s + w + "metacarpal", finger_joint_id(left, finger, FingerSegment::Metacarpal));
           t.emplace(s + w + "tip", finger_joint_id(left, finger, FingerSegment::Tip));
           // VRM 0.x: ThumbIntermediate is the VRM 1.0 ThumbProximal (unambiguous).
           if (finger == Finger::Thumb) {
-            t.emplace(s + w + "intermediate", finger_joint_id(left, finger, FingerSegment::Proximal));
+            t.emplace(s + w + "intermediate",
+                      finger_joint_id(left, finger, FingerSegment::Proximal));
           } else {
             t.emplace(s + w + "proximal", finger_joint_id(left, finger, FingerSegment::Proximal));
-            t.emplace(s + w + "intermediate", finger_joint_id(left, finger, FingerSegment::Intermediate));
+            t.emplace(s + w + "intermediate",
+                      finger_joint_id(left, finger, FingerSegment::Intermediate));
             t.emplace(s + w + "distal", finger_joint_id(left, finger, FingerSegment::Distal));
           }
         }
@@ -225,8 +271,10 @@ int canonical_joint_id_vrm0(std::string_view vrm0_bone_name) {
   const bool right = key.rfind("right", 0) == 0;
   if (left || right) {
     // VRM 0.x thumb: Proximal/Intermediate/Distal = VRM 1.0 Metacarpal/Proximal/Distal.
-    if (is_vrm0_thumb_name(key, "proximal")) return finger_joint_id(left, Finger::Thumb, FingerSegment::Metacarpal);
-    if (is_vrm0_thumb_name(key, "intermediate")) return finger_joint_id(left, Finger::Thumb, FingerSegment::Proximal);
+    if (is_vrm0_thumb_name(key, "proximal"))
+      return finger_joint_id(left, Finger::Thumb, FingerSegment::Metacarpal);
+    if (is_vrm0_thumb_name(key, "intermediate"))
+      return finger_joint_id(left, Finger::Thumb, FingerSegment::Proximal);
   }
   return canonical_joint_id(vrm0_bone_name);
 }
@@ -254,11 +302,16 @@ int finger_joint_id(bool left, Finger finger, FingerSegment segment) {
   if (f < 0 || f >= kFingerCount || seg < 0 || seg >= kFingerSegmentCount) return -1;
   if (finger == Finger::Thumb) {
     switch (segment) {
-      case FingerSegment::Metacarpal: return base + 0;
-      case FingerSegment::Proximal: return base + 1;
-      case FingerSegment::Intermediate: return -1;
-      case FingerSegment::Distal: return base + 2;
-      case FingerSegment::Tip: return base + 3;
+      case FingerSegment::Metacarpal:
+        return base + 0;
+      case FingerSegment::Proximal:
+        return base + 1;
+      case FingerSegment::Intermediate:
+        return -1;
+      case FingerSegment::Distal:
+        return base + 2;
+      case FingerSegment::Tip:
+        return base + 3;
     }
     return -1;
   }
@@ -268,16 +321,30 @@ int finger_joint_id(bool left, Finger finger, FingerSegment segment) {
 int humanoid_parent(int id) {
   if (id < 0 || id >= kHumanoidJointCount) return -1;
   switch (id) {
-    case kHips: return -1;
-    case kSpine: return kHips;
-    case kChest: return kSpine;
-    case kUpperChest: return kChest;
-    case kNeck: return kUpperChest;
-    case kHead: return kNeck;
-    case kJaw: case kLeftEye: case kRightEye: return kHead;
-    case kLeftShoulder: case kRightShoulder: return kUpperChest;
-    case kLeftUpperLeg: case kRightUpperLeg: return kHips;
-    default: break;
+    case kHips:
+      return -1;
+    case kSpine:
+      return kHips;
+    case kChest:
+      return kSpine;
+    case kUpperChest:
+      return kChest;
+    case kNeck:
+      return kUpperChest;
+    case kHead:
+      return kNeck;
+    case kJaw:
+    case kLeftEye:
+    case kRightEye:
+      return kHead;
+    case kLeftShoulder:
+    case kRightShoulder:
+      return kUpperChest;
+    case kLeftUpperLeg:
+    case kRightUpperLeg:
+      return kHips;
+    default:
+      break;
   }
   // Chains: each arm, hand and leg joint's parent is the joint before it, except a finger's first
   // segment, whose parent is the hand.
@@ -290,7 +357,8 @@ int humanoid_parent(int id) {
     const int thumb_meta = finger_joint_id(left, Finger::Thumb, FingerSegment::Metacarpal);
     if (id == thumb_meta) return hand;
     for (int f = 1; f < kFingerCount; ++f) {
-      if (id == finger_joint_id(left, static_cast<Finger>(f), FingerSegment::Metacarpal)) return hand;
+      if (id == finger_joint_id(left, static_cast<Finger>(f), FingerSegment::Metacarpal))
+        return hand;
     }
     return id - 1;
   }
@@ -299,11 +367,19 @@ int humanoid_parent(int id) {
 
 bool humanoid_joint_required(int id) {
   switch (id) {
-    case kHips: case kSpine: case kNeck: case kHead:
-    case kLeftUpperArm: case kLeftLowerArm: case kLeftHand:
-    case kRightUpperArm: case kRightLowerArm: case kRightHand:
+    case kHips:
+    case kSpine:
+    case kNeck:
+    case kHead:
+    case kLeftUpperArm:
+    case kLeftLowerArm:
+    case kLeftHand:
+    case kRightUpperArm:
+    case kRightLowerArm:
+    case kRightHand:
       return true;
-    default: break;
+    default:
+      break;
   }
   for (int side = 0; side < 2; ++side) {
     for (int f = 0; f < kFingerCount; ++f) {

@@ -24,6 +24,8 @@
 
 namespace sw::skeleton {
 
+// The X-macro tables are laid out by hand, a row per joint group: clang-format leaves them.
+// clang-format off
 // X-macro: order is the canonical id order (stable: synthesis and the page index by it).
 // Torso and head first, then each arm with its hand (fingers metacarpal..tip), then the legs.
 #define SW_HUMANOID_SIDE_ARM(S, s)                                                          \
@@ -54,12 +56,13 @@ namespace sw::skeleton {
   X(kRightEye, "rightEye")                                                              \
   SW_HUMANOID_SIDE_ARM(Left, left) SW_HUMANOID_SIDE_ARM(Right, right)                   \
   SW_HUMANOID_SIDE_LEG(Left, left) SW_HUMANOID_SIDE_LEG(Right, right)
+// clang-format on
 
 enum HumanoidJoint : int {
 #define X(id, name) id,
   SW_HUMANOID_JOINTS
 #undef X
-  kHumanoidJointCount
+      kHumanoidJointCount
 };
 
 // "leftUpperArm" for kLeftUpperArm; empty for an id out of range.

@@ -28,9 +28,11 @@ inline void store(glm::vec4& v, Float4 r) { std::memcpy(&v, &r, sizeof r); }
 
 // out = parent * T * R * S. The local matrix is affine (bottom row 0 0 0 1), so each of its first
 // three columns needs three multiply-adds and the translation column one more: 12 instead of 16.
-inline void model_times_transform(const glm::mat4& parent, const math::Transform& local, glm::mat4& out) {
+inline void model_times_transform(const glm::mat4& parent, const math::Transform& local,
+                                  glm::mat4& out) {
   const glm::mat3 r = glm::mat3_cast(local.rotation);
-  const Float4 p0 = load(parent[0]), p1 = load(parent[1]), p2 = load(parent[2]), p3 = load(parent[3]);
+  const Float4 p0 = load(parent[0]), p1 = load(parent[1]), p2 = load(parent[2]),
+               p3 = load(parent[3]);
   for (int c = 0; c < 3; ++c) {
     const glm::vec3 column = r[c] * local.scale[c];
     store(out[c], p0 * column.x + p1 * column.y + p2 * column.z);
@@ -41,7 +43,8 @@ inline void model_times_transform(const glm::mat4& parent, const math::Transform
 
 // out = parent * local for a general local matrix.
 inline void model_times_matrix(const glm::mat4& parent, const glm::mat4& local, glm::mat4& out) {
-  const Float4 p0 = load(parent[0]), p1 = load(parent[1]), p2 = load(parent[2]), p3 = load(parent[3]);
+  const Float4 p0 = load(parent[0]), p1 = load(parent[1]), p2 = load(parent[2]),
+               p3 = load(parent[3]);
   for (int c = 0; c < 4; ++c) {
     const glm::vec4& l = local[c];
     store(out[c], p0 * l.x + p1 * l.y + p2 * l.z + p3 * l.w);

@@ -12,8 +12,8 @@
 // parent from `output` (so `output` must hold a complete, up-to-date pose from an earlier run).
 // `to` stops the pass after that joint index (inclusive), e.g. to skip the legs.
 //
-// Does not: allocate, own buffers, or read rest poses — the input is the full local pose (start from
-// each joint's `rest` for unanimated joints).
+// Does not: allocate, own buffers, or read rest poses — the input is the full local pose (start
+// from each joint's `rest` for unanimated joints).
 #pragma once
 
 #include <glm/glm.hpp>

@@ -8,10 +8,13 @@
 namespace sw::skeleton {
 namespace {
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 std::string describe(const Skeleton& s, int index) {
-  return "joint " + std::to_string(index) + " '" + s.joints[static_cast<std::size_t>(index)].name + "'";
+  return "joint " + std::to_string(index) + " '" + s.joints[static_cast<std::size_t>(index)].name +
+         "'";
 }
 
 }  // namespace
@@ -30,7 +33,8 @@ std::string Skeleton::validate() const {
     if (j.name.empty()) return "joint " + std::to_string(i) + " has an empty name";
     const auto [it, inserted] = seen.emplace(j.name, i);
     if (!inserted) {
-      return describe(*this, i) + ": duplicate name (also joint " + std::to_string(it->second) + ")";
+      return describe(*this, i) + ": duplicate name (also joint " + std::to_string(it->second) +
+             ")";
     }
     if (j.parent < -1 || j.parent >= joint_count()) {
       return describe(*this, i) + ": parent index " + std::to_string(j.parent) + " is out of range";

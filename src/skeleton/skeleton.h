@@ -15,8 +15,8 @@ namespace sw::skeleton {
 
 struct Joint {
   std::string name;
-  int parent = -1;            // index into Skeleton::joints, -1 for a root
-  math::Transform rest;       // local rest transform relative to the parent
+  int parent = -1;       // index into Skeleton::joints, -1 for a root
+  math::Transform rest;  // local rest transform relative to the parent
 };
 
 struct Skeleton {

@@ -16,7 +16,8 @@ struct Builder {
     Joint j;
     j.name = name;
     j.parent = parent;
-    j.rest.translation = parent < 0 ? model_pos : model_pos - model[static_cast<std::size_t>(parent)];
+    j.rest.translation =
+        parent < 0 ? model_pos : model_pos - model[static_cast<std::size_t>(parent)];
     skeleton.joints.push_back(j);
     model.push_back(model_pos);
     return skeleton.joint_count() - 1;
@@ -38,11 +39,14 @@ void add_arm(Builder& b, int upper_chest, bool left, bool finger_metacarpals) {
   const char* fn[4] = {"Index", "Middle", "Ring", "Little"};
   const float z[4] = {0.028f, 0.009f, -0.010f, -0.026f};
   const float knuckle[4] = {0.092f, 0.095f, 0.090f, 0.087f};  // wrist to knuckle
-  const float len[4][3] = {{0.045f, 0.026f, 0.022f}, {0.050f, 0.030f, 0.024f},
-                           {0.046f, 0.029f, 0.023f}, {0.040f, 0.024f, 0.021f}};
+  const float len[4][3] = {{0.045f, 0.026f, 0.022f},
+                           {0.050f, 0.030f, 0.024f},
+                           {0.046f, 0.029f, 0.023f},
+                           {0.040f, 0.024f, 0.021f}};
   for (int f = 0; f < 4; ++f) {
     const std::string n = p + fn[f];
-    const int m = finger_metacarpals ? b.add(n + "Metacarpal", hand, {x * 0.74f, 1.43f, z[f] * 0.6f}) : hand;
+    const int m =
+        finger_metacarpals ? b.add(n + "Metacarpal", hand, {x * 0.74f, 1.43f, z[f] * 0.6f}) : hand;
     float xx = 0.72f + knuckle[f];
     const int j1 = b.add(n + "Proximal", m, {x * xx, 1.43f, z[f]});
     xx += len[f][0];
@@ -97,7 +101,8 @@ std::vector<glm::vec3> rest_positions(const Skeleton& skeleton) {
   std::vector<glm::vec3> model(skeleton.joints.size());
   for (std::size_t i = 0; i < skeleton.joints.size(); ++i) {
     const Joint& j = skeleton.joints[i];
-    model[i] = j.rest.translation + (j.parent < 0 ? glm::vec3(0.0f) : model[static_cast<std::size_t>(j.parent)]);
+    model[i] = j.rest.translation +
+               (j.parent < 0 ? glm::vec3(0.0f) : model[static_cast<std::size_t>(j.parent)]);
   }
   return model;
 }

@@ -36,15 +36,22 @@ bool AvatarInstance::update(SkinningPath path) {
   fk.skeleton = &a.skeleton;
   fk.input = locals_;
   fk.output = models_;
-  if (!fk.run()) { error_ = "forward kinematics rejected the pose"; return false; }
+  if (!fk.run()) {
+    error_ = "forward kinematics rejected the pose";
+    return false;
+  }
 
   SkinningMatrixJob palette;
   palette.models = models_.data();
   palette.inverse_binds = a.inverse_bind.data();
   palette.joint_count = static_cast<int>(a.inverse_bind.size()) < joint_count
-                            ? static_cast<int>(a.inverse_bind.size()) : joint_count;
+                            ? static_cast<int>(a.inverse_bind.size())
+                            : joint_count;
   palette.skinning_matrices = skinning_.data();
-  if (!palette.run()) { error_ = palette.validate(); return false; }
+  if (!palette.run()) {
+    error_ = palette.validate();
+    return false;
+  }
 
   const bool has_normals = !morphed_normals_.empty();
   MorphJob morph;
@@ -57,7 +64,10 @@ bool AvatarInstance::update(SkinningPath path) {
   morph.weights = morph_weights_.data();
   morph.out_positions = morphed_positions_.data();
   morph.out_normals = has_normals ? morphed_normals_.data() : nullptr;
-  if (!morph.run()) { error_ = morph.validate(); return false; }
+  if (!morph.run()) {
+    error_ = morph.validate();
+    return false;
+  }
 
   SkinningJob skin;
   skin.vertex_count = static_cast<int>(morphed_positions_.size());
@@ -70,7 +80,10 @@ bool AvatarInstance::update(SkinningPath path) {
   skin.out_positions = out_positions_.data();
   skin.out_normals = has_normals ? out_normals_.data() : nullptr;
   skin.path = path;
-  if (!skin.run()) { error_ = skin.validate(); return false; }
+  if (!skin.run()) {
+    error_ = skin.validate();
+    return false;
+  }
 
   // Anchors ride their joint: the offset is in the joint's bind space (avatar.h), so the point
   // moves exactly like a vertex weighted fully to that joint.

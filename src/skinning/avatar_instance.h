@@ -40,8 +40,8 @@ class AvatarInstance {
 
   const std::vector<glm::mat4>& model_matrices() const { return models_; }
   const std::vector<glm::mat4>& skinning_matrices() const { return skinning_; }
-  const std::vector<float>& positions() const { return out_positions_; }   // 3 per vertex
-  const std::vector<float>& normals() const { return out_normals_; }       // 3 per vertex
+  const std::vector<float>& positions() const { return out_positions_; }            // 3 per vertex
+  const std::vector<float>& normals() const { return out_normals_; }                // 3 per vertex
   const std::vector<float>& anchor_positions() const { return anchor_positions_; }  // 3 per anchor
   const std::vector<float>& anchor_normals() const { return anchor_normals_; }      // 3 per anchor
 

@@ -20,34 +20,43 @@ DualQuat from_rigid(const glm::mat4& m) {
   return {r, (t * r) * 0.5f};
 }
 
-float quat_dot(const glm::quat& a, const glm::quat& b) { return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z; }
+float quat_dot(const glm::quat& a, const glm::quat& b) {
+  return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 }  // namespace
 
 std::string DualQuaternionSkinningJob::validate() const {
   if (vertex_count < 0) return "DualQuaternionSkinningJob: negative vertex count";
   if (vertex_count == 0) return {};
-  if (!skinning_matrices || joint_count <= 0) return "DualQuaternionSkinningJob: no skinning matrices";
-  if (!in_positions || !joints || !weights || !out_positions) return "DualQuaternionSkinningJob: missing buffers";
-  if (in_normals && !out_normals) return "DualQuaternionSkinningJob: normals given without an output";
+  if (!skinning_matrices || joint_count <= 0)
+    return "DualQuaternionSkinningJob: no skinning matrices";
+  if (!in_positions || !joints || !weights || !out_positions)
+    return "DualQuaternionSkinningJob: missing buffers";
+  if (in_normals && !out_normals)
+    return "DualQuaternionSkinningJob: normals given without an output";
   for (int j = 0; j < joint_count; ++j) {
     const glm::mat3 r(skinning_matrices[j]);
     const glm::mat3 should_be_identity = glm::transpose(r) * r;
     for (int c = 0; c < 3; ++c)
       for (int k = 0; k < 3; ++k)
         if (std::abs(should_be_identity[c][k] - (c == k ? 1.0f : 0.0f)) > 1e-3f)
-          return "DualQuaternionSkinningJob: matrix " + std::to_string(j) + " is not rigid (scale or shear)";
+          return "DualQuaternionSkinningJob: matrix " + std::to_string(j) +
+                 " is not rigid (scale or shear)";
   }
   for (int v = 0; v < vertex_count; ++v)
     for (std::uint16_t j : joints[v])
-      if (j >= joint_count) return "DualQuaternionSkinningJob: vertex " + std::to_string(v) + " joint index out of range";
+      if (j >= joint_count)
+        return "DualQuaternionSkinningJob: vertex " + std::to_string(v) +
+               " joint index out of range";
   return {};
 }
 
 bool DualQuaternionSkinningJob::run() const {
   if (!validate().empty()) return false;
   std::vector<DualQuat> dqs(static_cast<std::size_t>(joint_count));
-  for (int j = 0; j < joint_count; ++j) dqs[static_cast<std::size_t>(j)] = from_rigid(skinning_matrices[j]);
+  for (int j = 0; j < joint_count; ++j)
+    dqs[static_cast<std::size_t>(j)] = from_rigid(skinning_matrices[j]);
   for (int v = 0; v < vertex_count; ++v) {
     const auto& j = joints[v];
     const glm::vec4 w = weights[v];
@@ -68,11 +77,15 @@ bool DualQuaternionSkinningJob::run() const {
     const glm::quat t = (dual * glm::conjugate(real)) * 2.0f;
     const glm::vec3 p = real * in_positions[v] + glm::vec3(t.x, t.y, t.z);
     float* op = out_positions + 3 * v;
-    op[0] = p.x; op[1] = p.y; op[2] = p.z;
+    op[0] = p.x;
+    op[1] = p.y;
+    op[2] = p.z;
     if (in_normals) {
       const glm::vec3 n = real * in_normals[v];
       float* on = out_normals + 3 * v;
-      on[0] = n.x; on[1] = n.y; on[2] = n.z;
+      on[0] = n.x;
+      on[1] = n.y;
+      on[2] = n.z;
     }
   }
   return true;

@@ -22,14 +22,14 @@ namespace sw::skinning {
 
 struct DualQuaternionSkinningJob {
   int vertex_count = 0;
-  const glm::mat4* skinning_matrices = nullptr;          // joint_count, rigid
+  const glm::mat4* skinning_matrices = nullptr;  // joint_count, rigid
   int joint_count = 0;
   const glm::vec3* in_positions = nullptr;
-  const glm::vec3* in_normals = nullptr;                 // or null: no normals
+  const glm::vec3* in_normals = nullptr;  // or null: no normals
   const std::array<std::uint16_t, 4>* joints = nullptr;
   const glm::vec4* weights = nullptr;
-  float* out_positions = nullptr;                        // 3 * vertex_count
-  float* out_normals = nullptr;                          // 3 * vertex_count when in_normals set
+  float* out_positions = nullptr;  // 3 * vertex_count
+  float* out_normals = nullptr;    // 3 * vertex_count when in_normals set
 
   // Empty when usable; lists the first problem, including a non-rigid matrix (scale or shear
   // beyond 1e-3) and joint indices out of range (checked here: this path is not the hot loop).

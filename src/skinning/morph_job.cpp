@@ -26,7 +26,8 @@ std::vector<VertexRange> morph_vertex_ranges(const std::vector<avatar::MorphTarg
     }
     std::size_t last = n - 1;
     while (last > first && !moves(last)) --last;
-    ranges[t] = VertexRange{static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last + 1)};
+    ranges[t] =
+        VertexRange{static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last + 1)};
   }
   return ranges;
 }
@@ -39,12 +40,15 @@ std::string MorphJob::validate() const {
   if (target_count > 0 && (!targets || !weights)) return "MorphJob: targets or weights missing";
   const auto n = static_cast<std::size_t>(vertex_count);
   for (int t = 0; t < target_count; ++t) {
-    if (!std::isfinite(weights[t])) return "MorphJob: weight " + std::to_string(t) + " is not finite";
+    if (!std::isfinite(weights[t]))
+      return "MorphJob: weight " + std::to_string(t) + " is not finite";
     const avatar::MorphTarget& target = targets[t];
     if (target.position_deltas.size() != n)
-      return "MorphJob: target '" + target.name + "' has a delta count different from the vertex count";
+      return "MorphJob: target '" + target.name +
+             "' has a delta count different from the vertex count";
     if (!target.normal_deltas.empty() && target.normal_deltas.size() != n)
-      return "MorphJob: target '" + target.name + "' has a normal delta count different from the vertex count";
+      return "MorphJob: target '" + target.name +
+             "' has a normal delta count different from the vertex count";
     if (ranges && (ranges[t].first > ranges[t].end || ranges[t].end > n))
       return "MorphJob: vertex range of target '" + target.name + "' out of bounds";
   }
@@ -54,8 +58,10 @@ std::string MorphJob::validate() const {
 bool MorphJob::run() const {
   if (!validate().empty()) return false;
   const auto n = static_cast<std::size_t>(vertex_count);
-  if (out_positions != rest_positions) std::memcpy(out_positions, rest_positions, n * sizeof(glm::vec3));
-  if (rest_normals && out_normals != rest_normals) std::memcpy(out_normals, rest_normals, n * sizeof(glm::vec3));
+  if (out_positions != rest_positions)
+    std::memcpy(out_positions, rest_positions, n * sizeof(glm::vec3));
+  if (rest_normals && out_normals != rest_normals)
+    std::memcpy(out_normals, rest_normals, n * sizeof(glm::vec3));
   for (int t = 0; t < target_count; ++t) {
     const float w = weights[t];
     if (w == 0.0f) continue;

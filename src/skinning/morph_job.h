@@ -28,14 +28,14 @@ std::vector<VertexRange> morph_vertex_ranges(const std::vector<avatar::MorphTarg
 
 struct MorphJob {
   int vertex_count = 0;
-  const glm::vec3* rest_positions = nullptr;   // vertex_count
-  const glm::vec3* rest_normals = nullptr;     // vertex_count, or null: no normal output
+  const glm::vec3* rest_positions = nullptr;  // vertex_count
+  const glm::vec3* rest_normals = nullptr;    // vertex_count, or null: no normal output
   const avatar::MorphTarget* targets = nullptr;
   int target_count = 0;
-  const VertexRange* ranges = nullptr;         // optional, target_count (morph_vertex_ranges)
-  const float* weights = nullptr;              // target_count, finite
-  glm::vec3* out_positions = nullptr;          // vertex_count
-  glm::vec3* out_normals = nullptr;            // vertex_count when rest_normals is set
+  const VertexRange* ranges = nullptr;  // optional, target_count (morph_vertex_ranges)
+  const float* weights = nullptr;       // target_count, finite
+  glm::vec3* out_positions = nullptr;   // vertex_count
+  glm::vec3* out_normals = nullptr;     // vertex_count when rest_normals is set
 
   std::string validate() const;
   bool run() const;

@@ -40,17 +40,22 @@ void skin_scalar(const SkinningJob& job) {
     } else if (w.z == 0.0f && w.w == 0.0f) {
       for (int k = 0; k < 4; ++k) c[k] = m[j[0]][k] * w.x + m[j[1]][k] * w.y;
     } else {
-      for (int k = 0; k < 4; ++k) c[k] = m[j[0]][k] * w.x + m[j[1]][k] * w.y + m[j[2]][k] * w.z + m[j[3]][k] * w.w;
+      for (int k = 0; k < 4; ++k)
+        c[k] = m[j[0]][k] * w.x + m[j[1]][k] * w.y + m[j[2]][k] * w.z + m[j[3]][k] * w.w;
     }
     const glm::vec3 p = in_positions[v];
     const glm::vec4 sp = c[0] * p.x + c[1] * p.y + c[2] * p.z + c[3];
     float* op = out_positions + 3 * v;
-    op[0] = sp.x; op[1] = sp.y; op[2] = sp.z;
+    op[0] = sp.x;
+    op[1] = sp.y;
+    op[2] = sp.z;
     if (in_normals) {
       const glm::vec3 nv = in_normals[v];
       const glm::vec4 sn = c[0] * nv.x + c[1] * nv.y + c[2] * nv.z;
       float* on = out_normals + 3 * v;
-      on[0] = sn.x; on[1] = sn.y; on[2] = sn.z;
+      on[0] = sn.x;
+      on[1] = sn.y;
+      on[2] = sn.z;
     }
   }
 }
@@ -72,13 +77,21 @@ inline void store3(float* p, F4 v) {
 }
 #else
 typedef float F4 __attribute__((vector_size(16)));
-inline F4 load4(const float* p) { F4 v; std::memcpy(&v, p, sizeof v); return v; }
+inline F4 load4(const float* p) {
+  F4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
 inline F4 splat(float x) { return F4{x, x, x, x}; }
 inline F4 load_splat(const float* p) { return splat(*p); }
 inline F4 mul(F4 a, F4 b) { return a * b; }
 inline F4 add(F4 a, F4 b) { return a + b; }
 inline void store4(float* p, F4 v) { std::memcpy(p, &v, sizeof v); }
-inline void store3(float* p, F4 v) { p[0] = v[0]; p[1] = v[1]; p[2] = v[2]; }
+inline void store3(float* p, F4 v) {
+  p[0] = v[0];
+  p[1] = v[1];
+  p[2] = v[2];
+}
 #endif
 
 // The job's arrays copied into locals: the output stores (memcpy natively, may_alias v128 stores
@@ -116,7 +129,8 @@ inline void skin_vertex_simd(const SimdArrays& a, std::size_t v) {
     const F4 w0 = load_splat(wp), w1 = load_splat(wp + 1);
     for (int k = 0; k < 4; ++k) c[k] = add(mul(load4(m0 + 4 * k), w0), mul(load4(m1 + 4 * k), w1));
   } else {
-    const F4 w0 = load_splat(wp), w1 = load_splat(wp + 1), w2 = load_splat(wp + 2), w3 = load_splat(wp + 3);
+    const F4 w0 = load_splat(wp), w1 = load_splat(wp + 1), w2 = load_splat(wp + 2),
+             w3 = load_splat(wp + 3);
     for (int k = 0; k < 4; ++k) {
       c[k] = add(add(add(mul(load4(m0 + 4 * k), w0), mul(load4(m1 + 4 * k), w1)),
                      mul(load4(m2 + 4 * k), w2)),
@@ -124,21 +138,35 @@ inline void skin_vertex_simd(const SimdArrays& a, std::size_t v) {
     }
   }
   const float* p = &a.positions[v].x;
-  const F4 sp = add(add(add(mul(c[0], load_splat(p)), mul(c[1], load_splat(p + 1))), mul(c[2], load_splat(p + 2))), c[3]);
+  const F4 sp = add(add(add(mul(c[0], load_splat(p)), mul(c[1], load_splat(p + 1))),
+                        mul(c[2], load_splat(p + 2))),
+                    c[3]);
   float* op = a.out_positions + 3 * v;
-  if (kLast) store3(op, sp); else store4(op, sp);
+  if (kLast)
+    store3(op, sp);
+  else
+    store4(op, sp);
   if (kNormals) {
     const float* n = &a.normals[v].x;
-    const F4 sn = add(add(mul(c[0], load_splat(n)), mul(c[1], load_splat(n + 1))), mul(c[2], load_splat(n + 2)));
+    const F4 sn = add(add(mul(c[0], load_splat(n)), mul(c[1], load_splat(n + 1))),
+                      mul(c[2], load_splat(n + 2)));
     float* on = a.out_normals + 3 * v;
-    if (kLast) store3(on, sn); else store4(on, sn);
+    if (kLast)
+      store3(on, sn);
+    else
+      store4(on, sn);
   }
 }
 
 template <bool kNormals>
 void skin_simd(const SkinningJob& job) {
-  const SimdArrays a{&job.skinning_matrices[0][0][0], job.joints, job.weights, job.in_positions,
-                     job.in_normals, job.out_positions, job.out_normals};
+  const SimdArrays a{&job.skinning_matrices[0][0][0],
+                     job.joints,
+                     job.weights,
+                     job.in_positions,
+                     job.in_normals,
+                     job.out_positions,
+                     job.out_normals};
   const std::size_t n = static_cast<std::size_t>(job.vertex_count);
   for (std::size_t v = 0; v + 1 < n; ++v) skin_vertex_simd<kNormals, false>(a, v);
   if (n > 0) skin_vertex_simd<kNormals, true>(a, n - 1);
@@ -178,7 +206,10 @@ bool SkinningJob::run() const {
   if (!validate().empty()) return false;
 #if defined(SW_SKINNING_SIMD)
   if (path == SkinningPath::Simd) {
-    if (in_normals) skin_simd<true>(*this); else skin_simd<false>(*this);
+    if (in_normals)
+      skin_simd<true>(*this);
+    else
+      skin_simd<false>(*this);
     return true;
   }
 #endif

@@ -33,7 +33,7 @@ bool simd_available();
 
 struct SkinningJob {
   int vertex_count = 0;
-  const glm::mat4* skinning_matrices = nullptr;          // joint_count (SkinningMatrixJob)
+  const glm::mat4* skinning_matrices = nullptr;  // joint_count (SkinningMatrixJob)
   int joint_count = 0;
   const glm::vec3* in_positions = nullptr;               // vertex_count (after morphs)
   const glm::vec3* in_normals = nullptr;                 // vertex_count, or null: no normals

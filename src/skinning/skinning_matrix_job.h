@@ -17,7 +17,7 @@ struct SkinningMatrixJob {
   const glm::mat4* models = nullptr;         // joint_count model matrices
   const glm::mat4* inverse_binds = nullptr;  // joint_count inverse bind matrices
   int joint_count = 0;
-  glm::mat4* skinning_matrices = nullptr;    // output, joint_count matrices
+  glm::mat4* skinning_matrices = nullptr;  // output, joint_count matrices
 
   std::string validate() const;
   bool run() const;

@@ -10,7 +10,7 @@ TEST(Blink, DeterministicRhythmWithinHumanIntervals) {
   const auto b = schedule_blinks(30.0, {}, 7);
   EXPECT_EQ(a, b);
   EXPECT_NE(a, schedule_blinks(30.0, {}, 8));
-  ASSERT_GE(a.size(), 5u);   // 30 s at one blink per 2.4..4.8 s
+  ASSERT_GE(a.size(), 5u);  // 30 s at one blink per 2.4..4.8 s
   ASSERT_LE(a.size(), 13u);
   for (std::size_t i = 1; i < a.size(); ++i) {
     EXPECT_GE(a[i] - a[i - 1], 2.4 - 1e-9);

@@ -19,7 +19,10 @@ TEST(Easing, CosineHasZeroSlopeAtTheEndsAndMeetsLinearInTheMiddle) {
 
 TEST(BilinearBlend, MatchesSeed001sFormulaAtTheCornersAndInside) {
   ChannelWeights q11, q12, q21, q22;
-  q11[0] = 0.0f; q12[0] = 1.0f; q21[0] = 2.0f; q22[0] = 4.0f;
+  q11[0] = 0.0f;
+  q12[0] = 1.0f;
+  q21[0] = 2.0f;
+  q22[0] = 4.0f;
   EXPECT_FLOAT_EQ(bilinear_blend(q11, q12, q21, q22, 0, 0)[0], 0.0f);
   EXPECT_FLOAT_EQ(bilinear_blend(q11, q12, q21, q22, 0, 1)[0], 1.0f);
   EXPECT_FLOAT_EQ(bilinear_blend(q11, q12, q21, q22, 1, 0)[0], 2.0f);

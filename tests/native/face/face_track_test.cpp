@@ -72,10 +72,10 @@ TEST(FaceTrack, EmotionReachesItsTargetThroughIntermediateStates) {
   FaceOptions options;
   options.blinks = false;
   ASSERT_TRUE(add_face_tracks(clip, s, face_rig_by_names(s), {sign}, options));
-  EXPECT_LT(weight(clip, 0, "mouthSmileLeft"), 0.05f);        // starts neutral
+  EXPECT_LT(weight(clip, 0, "mouthSmileLeft"), 0.05f);  // starts neutral
   const float early = weight(clip, 3, "mouthSmileLeft");
-  EXPECT_GT(early, 0.05f);                                     // moving...
-  EXPECT_LT(early, 0.8f);                                      // ...but not there yet (seed 003)
+  EXPECT_GT(early, 0.05f);                                       // moving...
+  EXPECT_LT(early, 0.8f);                                        // ...but not there yet (seed 003)
   EXPECT_NEAR(weight(clip, 89, "mouthSmileLeft"), 0.9f, 0.05f);  // settled at the preset
 }
 
@@ -115,7 +115,8 @@ TEST(FaceTrack, HeadShakeKeepsTheEyesOnTheAddressee) {
   float largest_turn = 0.0f;
   for (int f = 0; f < 60; ++f) {
     const glm::quat* locals = clip.rotations.data() + std::size_t(f) * s.joints.size();
-    largest_turn = std::max(largest_turn, 2.0f * std::acos(std::min(1.0f, std::fabs(locals[head].w))));
+    largest_turn =
+        std::max(largest_turn, 2.0f * std::acos(std::min(1.0f, std::fabs(locals[head].w))));
     const glm::quat eye_world = locals[0] * locals[1] * locals[2] * locals[head] * locals[eye];
     const glm::vec3 looking = eye_world * glm::vec3(0, 0, 1);
     EXPECT_GT(looking.z, 0.999f) << "frame " << f;

@@ -13,7 +13,8 @@ TEST(HeadGesture, GesturesStartAndEndAtRest) {
     EXPECT_LT(angle_of(head_gesture_rotation(g, 0.0f)), 1e-4f);
     EXPECT_LT(angle_of(head_gesture_rotation(g, 1.0f)), 1e-4f);
     float largest = 0.0f;
-    for (float u = 0; u <= 1.0f; u += 0.01f) largest = std::max(largest, angle_of(head_gesture_rotation(g, u)));
+    for (float u = 0; u <= 1.0f; u += 0.01f)
+      largest = std::max(largest, angle_of(head_gesture_rotation(g, u)));
     EXPECT_GT(largest, 0.1f);   // visible
     EXPECT_LT(largest, 0.45f);  // within a comfortable neck range (~25 degrees)
   }

@@ -40,7 +40,7 @@ TEST(Mouthing, CyrillicUkrainian) {
 TEST(Mouthing, InvalidUtf8AndEmptyAreHarmless) {
   EXPECT_TRUE(visemes_of_word("").empty());
   EXPECT_NO_FATAL_FAILURE(visemes_of_word("\xFF\xC3"));
-  EXPECT_NO_FATAL_FAILURE(visemes_of_word("\xE2\x82"));  // truncated 3-byte sequence
+  EXPECT_NO_FATAL_FAILURE(visemes_of_word("\xE2\x82"));      // truncated 3-byte sequence
   EXPECT_TRUE(schedule_mouthing("mama", 1.0, 1.0).empty());  // no time to say it
 }
 
@@ -49,9 +49,9 @@ TEST(Mouthing, ThreePhasesRestPeakRestWithLinearInBetweens) {
   const auto keys = schedule_mouthing("a", 0.0, 0.6);
   ASSERT_EQ(keys.size(), 3u);
   const int aa = channel_index("viseme_aa");
-  EXPECT_FLOAT_EQ(sample_mouthing(keys, 0.3)[aa], 1.0f);                 // peak in the middle
-  EXPECT_NEAR(sample_mouthing(keys, 0.15)[aa], 0.5f, 1e-5f);              // half way up
-  EXPECT_FLOAT_EQ(sample_mouthing(keys, 0.0)[aa], 0.0f);                  // at rest
+  EXPECT_FLOAT_EQ(sample_mouthing(keys, 0.3)[aa], 1.0f);      // peak in the middle
+  EXPECT_NEAR(sample_mouthing(keys, 0.15)[aa], 0.5f, 1e-5f);  // half way up
+  EXPECT_FLOAT_EQ(sample_mouthing(keys, 0.0)[aa], 0.0f);      // at rest
   EXPECT_FLOAT_EQ(sample_mouthing(keys, 0.6)[aa], 0.0f);
   EXPECT_FLOAT_EQ(sample_mouthing(keys, 2.0)[aa], 0.0f);
 }

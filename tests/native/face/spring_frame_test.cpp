@@ -49,7 +49,8 @@ TEST(SpringFrame, ShorteningASpringPullsThePointAndShowsIntermediateStates) {
     frame.step(0.1f);
     xs.push_back(frame.points()[std::size_t(lip)].position.x);
   }
-  for (std::size_t i = 1; i < xs.size(); ++i) EXPECT_LT(xs[i], xs[i - 1]);  // monotone, no overshoot
+  for (std::size_t i = 1; i < xs.size(); ++i)
+    EXPECT_LT(xs[i], xs[i - 1]);        // monotone, no overshoot
   EXPECT_GT(xs.front(), 0.6f + 0.05f);  // an intermediate state, not a jump to the end
   EXPECT_NEAR(xs.back(), 0.6f, 0.02f);
 }
@@ -91,8 +92,10 @@ TEST(SpringFrame, StepMovesEveryPointByItsNetForce) {
   }
   frame.step(alpha);
   for (int p = 0; p < 5; ++p) {
-    EXPECT_EQ(frame.points()[std::size_t(p)].position.x, expected[std::size_t(p)].x) << "point " << p;
-    EXPECT_EQ(frame.points()[std::size_t(p)].position.y, expected[std::size_t(p)].y) << "point " << p;
+    EXPECT_EQ(frame.points()[std::size_t(p)].position.x, expected[std::size_t(p)].x)
+        << "point " << p;
+    EXPECT_EQ(frame.points()[std::size_t(p)].position.y, expected[std::size_t(p)].y)
+        << "point " << p;
   }
 }
 

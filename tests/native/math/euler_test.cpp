@@ -17,9 +17,15 @@ double quat_distance(const glm::dquat& a, const glm::dquat& b) {
   return std::min(glm::length(va - vb), glm::length(va + vb));
 }
 
-glm::dmat3 rx(double a) { return glm::dmat3(1, 0, 0, 0, std::cos(a), std::sin(a), 0, -std::sin(a), std::cos(a)); }
-glm::dmat3 ry(double a) { return glm::dmat3(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a)); }
-glm::dmat3 rz(double a) { return glm::dmat3(std::cos(a), std::sin(a), 0, -std::sin(a), std::cos(a), 0, 0, 0, 1); }
+glm::dmat3 rx(double a) {
+  return glm::dmat3(1, 0, 0, 0, std::cos(a), std::sin(a), 0, -std::sin(a), std::cos(a));
+}
+glm::dmat3 ry(double a) {
+  return glm::dmat3(std::cos(a), 0, -std::sin(a), 0, 1, 0, std::sin(a), 0, std::cos(a));
+}
+glm::dmat3 rz(double a) {
+  return glm::dmat3(std::cos(a), std::sin(a), 0, -std::sin(a), std::cos(a), 0, 0, 0, 1);
+}
 
 double matrix_distance(const glm::dmat3& a, const glm::dmat3& b) {
   double d = 0;
@@ -42,17 +48,24 @@ TEST(EulerOrderNames, ParseAndPrintAllSix) {
 TEST(EulerConvention, OrderNamesTheCompositionLeftToRight) {
   // XYZ means Rx * Ry * Rz (the BVH channel order as listed), checked against explicit matrices.
   const glm::dvec3 a(0.3, -0.7, 1.1);
-  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::XYZ), rx(a.x) * ry(a.y) * rz(a.z)), 1e-12);
-  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::XZY), rx(a.x) * rz(a.z) * ry(a.y)), 1e-12);
-  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::YXZ), ry(a.y) * rx(a.x) * rz(a.z)), 1e-12);
-  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::YZX), ry(a.y) * rz(a.z) * rx(a.x)), 1e-12);
-  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::ZXY), rz(a.z) * rx(a.x) * ry(a.y)), 1e-12);
-  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::ZYX), rz(a.z) * ry(a.y) * rx(a.x)), 1e-12);
+  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::XYZ), rx(a.x) * ry(a.y) * rz(a.z)),
+            1e-12);
+  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::XZY), rx(a.x) * rz(a.z) * ry(a.y)),
+            1e-12);
+  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::YXZ), ry(a.y) * rx(a.x) * rz(a.z)),
+            1e-12);
+  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::YZX), ry(a.y) * rz(a.z) * rx(a.x)),
+            1e-12);
+  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::ZXY), rz(a.z) * rx(a.x) * ry(a.y)),
+            1e-12);
+  EXPECT_LT(matrix_distance(matrix_from_euler(a, EulerOrder::ZYX), rz(a.z) * ry(a.y) * rx(a.x)),
+            1e-12);
 }
 
 TEST(EulerConvention, PositiveAngleIsRightHanded) {
   // +90° about Z takes +X to +Y (right-handed, glTF).
-  const glm::dvec3 v = matrix_from_euler(glm::dvec3(0, 0, kPi / 2), EulerOrder::XYZ) * glm::dvec3(1, 0, 0);
+  const glm::dvec3 v =
+      matrix_from_euler(glm::dvec3(0, 0, kPi / 2), EulerOrder::XYZ) * glm::dvec3(1, 0, 0);
   EXPECT_NEAR(v.x, 0.0, 1e-12);
   EXPECT_NEAR(v.y, 1.0, 1e-12);
 }
@@ -63,7 +76,9 @@ TEST(EulerConvention, QuaternionAndMatrixAgree) {
   for (EulerOrder order : kAllEulerOrders) {
     for (int i = 0; i < 100; ++i) {
       const glm::dvec3 a(angle(rng), angle(rng), angle(rng));
-      EXPECT_LT(matrix_distance(glm::mat3_cast(quat_from_euler(a, order)), matrix_from_euler(a, order)), 1e-12);
+      EXPECT_LT(
+          matrix_distance(glm::mat3_cast(quat_from_euler(a, order)), matrix_from_euler(a, order)),
+          1e-12);
     }
   }
 }
@@ -132,7 +147,8 @@ TEST(EulerGimbalLock, MiddleAngleAtPlusMinus90IsDeterministicAndExact) {
         EXPECT_LT(quat_distance(q, quat_from_euler(back, order)), 1e-6) << euler_order_name(order);
         // The float path is exact to float precision too.
         const glm::quat qf(q);
-        EXPECT_LT(quat_distance(glm::dquat(qf), glm::dquat(quat_from_euler(euler_from_quat(qf, order), order))),
+        EXPECT_LT(quat_distance(glm::dquat(qf),
+                                glm::dquat(quat_from_euler(euler_from_quat(qf, order), order))),
                   1e-5);
       }
     }
@@ -178,7 +194,8 @@ TEST(EulerNear, ReproducesTheRotationAndStaysWithinHalfATurnOfTheReference) {
       const glm::dvec3 reference(far(rng), far(rng), far(rng));
       const glm::dvec3 near = euler_from_quat_near(q, order, reference);
       EXPECT_LT(quat_distance(q, quat_from_euler(near, order)), 1e-9) << euler_order_name(order);
-      for (int axis = 0; axis < 3; ++axis) EXPECT_LE(std::fabs(near[axis] - reference[axis]), kPi + 1e-9);
+      for (int axis = 0; axis < 3; ++axis)
+        EXPECT_LE(std::fabs(near[axis] - reference[axis]), kPi + 1e-9);
     }
   }
 }

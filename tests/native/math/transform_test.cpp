@@ -18,8 +18,8 @@ TEST(Transform, ToMatrixIsTranslateRotateScale) {
   t.translation = {1, 2, 3};
   t.rotation = glm::angleAxis(0.7f, glm::normalize(glm::vec3(1, 2, -1)));
   t.scale = {2, 0.5f, 3};
-  const glm::mat4 expected = glm::translate(glm::mat4(1), t.translation) * glm::mat4_cast(t.rotation) *
-                             glm::scale(glm::mat4(1), t.scale);
+  const glm::mat4 expected = glm::translate(glm::mat4(1), t.translation) *
+                             glm::mat4_cast(t.rotation) * glm::scale(glm::mat4(1), t.scale);
   EXPECT_LT(max_abs_diff(t.to_matrix(), expected), 1e-6f);
 }
 

@@ -26,7 +26,8 @@ void expect_reproduces(const glm::dvec3& r1, const glm::dvec3& r2, const char* w
   for (EulerOrder order : kAllEulerOrders) {
     const glm::dvec3 angles = euler_between(r1, r2, order);
     const glm::dvec3 moved = apply_angles(angles, order, glm::normalize(r1));
-    EXPECT_LT(glm::length(moved - glm::normalize(r2)), 1e-6) << what << " order " << euler_order_name(order);
+    EXPECT_LT(glm::length(moved - glm::normalize(r2)), 1e-6)
+        << what << " order " << euler_order_name(order);
   }
 }
 
@@ -55,7 +56,7 @@ TEST(RotationBetween, OppositeIsHalfTurnAboutAPerpendicular) {
   for (int i = 0; i < 100; ++i) cases.push_back(random_unit(rng));
   for (const glm::dvec3& r : cases) {
     const glm::dquat q = rotation_between(r, -r);
-    EXPECT_NEAR(q.w, 0.0, 1e-12);  // 180°
+    EXPECT_NEAR(q.w, 0.0, 1e-12);                                     // 180°
     EXPECT_NEAR(glm::dot(glm::dvec3(q.x, q.y, q.z), r), 0.0, 1e-12);  // axis perpendicular to r
     expect_reproduces(r, -r, "opposite");
   }

@@ -1,4 +1,5 @@
-// BVH import/export (skeleton/bvh.h): structure, conventions, exact round trip, malformed catalogue.
+// BVH import/export (skeleton/bvh.h): structure, conventions, exact round trip, malformed
+// catalogue.
 #include "skeleton/bvh.h"
 
 #include <gtest/gtest.h>
@@ -89,7 +90,8 @@ TEST(BvhRead, FrameToLocalAppliesChannelOrderInDegrees) {
   EXPECT_NEAR(local[0].translation.x, 0.01f, 1e-7f);
   EXPECT_NEAR(local[0].translation.y, 0.90f, 1e-6f);
   // Root rotation: Zrotation 10, Xrotation 20, Yrotation 30 listed -> R = Rz(10) Rx(20) Ry(30).
-  const glm::dquat expected = math::quat_from_euler(glm::radians(glm::dvec3(20, 30, 10)), math::EulerOrder::ZXY);
+  const glm::dquat expected =
+      math::quat_from_euler(glm::radians(glm::dvec3(20, 30, 10)), math::EulerOrder::ZXY);
   EXPECT_NEAR(std::fabs(glm::dot(glm::dquat(local[0].rotation), expected)), 1.0, 1e-6);
   // RightArm: Xrotation 0, Yrotation 0, Zrotation 90: the forearm's offset -X turns to -Y.
   EXPECT_NEAR(local[1].translation.y, 0.40f, 1e-6f);
@@ -108,7 +110,8 @@ TEST(BvhRead, SkeletonAndFkFromBvh) {
   EXPECT_EQ(s.joints[4].name, "RightForeArm_end");
   EXPECT_EQ(s.joints[4].parent, 2);
   std::vector<math::Transform> local(6);
-  for (int i = 0; i < 6; ++i) local[static_cast<std::size_t>(i)] = s.joints[static_cast<std::size_t>(i)].rest;
+  for (int i = 0; i < 6; ++i)
+    local[static_cast<std::size_t>(i)] = s.joints[static_cast<std::size_t>(i)].rest;
   ASSERT_TRUE(frame_to_local(bvh, 1, 0.01, local));  // fills the first 4; end sites keep rest
   std::vector<glm::mat4> model(6);
   LocalToModelJob job;
@@ -117,7 +120,8 @@ TEST(BvhRead, SkeletonAndFkFromBvh) {
   job.output = model;
   ASSERT_TRUE(job.run());
   // Frame 1: hips at (1.5, 91, -2) cm rotated; check against an explicit product for the wrist.
-  const glm::mat4 wrist = local[0].to_matrix() * local[1].to_matrix() * local[2].to_matrix() * local[4].to_matrix();
+  const glm::mat4 wrist =
+      local[0].to_matrix() * local[1].to_matrix() * local[2].to_matrix() * local[4].to_matrix();
   EXPECT_LT(glm::length(glm::vec3(model[4][3]) - glm::vec3(wrist[3])), 1e-6f);
 }
 
@@ -168,7 +172,8 @@ TEST(BvhRoundTrip, LocalTransformsThroughChannelsAndBack) {
     t.translation = {u(rng), u(rng), u(rng)};
     t.rotation = glm::normalize(glm::quat(u(rng), u(rng), u(rng), u(rng)));
   }
-  for (std::size_t i = 1; i < local.size(); ++i) local[i].translation = glm::vec3(bvh.joints[i].offset * 0.01);
+  for (std::size_t i = 1; i < local.size(); ++i)
+    local[i].translation = glm::vec3(bvh.joints[i].offset * 0.01);
   ASSERT_TRUE(local_to_frame(local, 0.01, bvh, 1));
   const Bvh back = read_ok(write_bvh(bvh));
   std::vector<math::Transform> decoded(bvh.joints.size());
@@ -188,7 +193,8 @@ TEST(BvhRoundTrip, ExportedAngleTracksAreContinuous) {
   std::vector<math::Transform> local(bvh.joints.size());
   const int arm = bvh.find("RightArm");  // channels Xrotation Yrotation Zrotation
   for (int f = 0; f < 2; ++f) {
-    local[static_cast<std::size_t>(arm)].rotation = glm::angleAxis(glm::radians(f == 0 ? 170.0f : 190.0f), glm::vec3(0, 0, 1));
+    local[static_cast<std::size_t>(arm)].rotation =
+        glm::angleAxis(glm::radians(f == 0 ? 170.0f : 190.0f), glm::vec3(0, 0, 1));
     ASSERT_TRUE(local_to_frame(local, 0.01, bvh, f));
   }
   const int z = bvh.channel_offset(arm) + 2;
@@ -197,7 +203,8 @@ TEST(BvhRoundTrip, ExportedAngleTracksAreContinuous) {
 }
 
 TEST(BvhWrite, NonDepthFirstArrayIsWrittenInFileOrder) {
-  // Joints stored breadth first: the writer emits depth first and permutes the frame values to match.
+  // Joints stored breadth first: the writer emits depth first and permutes the frame values to
+  // match.
   Bvh bvh;
   const auto joint = [](const char* name, int parent) {
     BvhJoint j;
@@ -246,45 +253,65 @@ std::vector<Malformed> catalogue() {
       {"truncated in the hierarchy", arm.substr(0, arm.find("\t\tJOINT RightForeArm") + 20), 10,
        "unexpected end of file"},
       {"truncated before MOTION", header_only, 30, "unexpected end of file"},
-      {"truncated motion (frame count mismatch: fewer)", arm.substr(0, arm.find("1.5 91.0")), 33, "truncated"},
+      {"truncated motion (frame count mismatch: fewer)", arm.substr(0, arm.find("1.5 91.0")), 33,
+       "truncated"},
       {"truncated mid-frame", arm.substr(0, arm.find("-20 -30")), 34, "has 4 values"},
       {"more frames than declared", replace(arm, "Frames: 2", "Frames: 1"), 34, "more frame lines"},
-      {"frame with an extra value", replace(arm, "5 -5 15\n", "5 -5 15 7\n"), 33, "more than the 15 values"},
+      {"frame with an extra value", replace(arm, "5 -5 15\n", "5 -5 15 7\n"), 33,
+       "more than the 15 values"},
       {"CHANNELS count 4", replace(arm, "CHANNELS 3 Xrotation", "CHANNELS 4 Xrotation"), 9,
        "declares 4 channels"},
-      {"CHANNELS count says 6, lists 3", replace(arm, "CHANNELS 3 Yrotation", "CHANNELS 6 Yrotation"), 14,
+      {"CHANNELS count says 6, lists 3",
+       replace(arm, "CHANNELS 3 Yrotation", "CHANNELS 6 Yrotation"), 14,
        "lists 3 channel names, then 'End'"},
       {"CHANNELS count says 3, lists 4",
-       replace(arm, "CHANNELS 3 Zrotation Yrotation Xrotation", "CHANNELS 3 Zrotation Yrotation Xrotation Xposition"),
+       replace(arm, "CHANNELS 3 Zrotation Yrotation Xrotation",
+               "CHANNELS 3 Zrotation Yrotation Xrotation Xposition"),
        23, "more channel names"},
-      {"unknown channel name", replace(arm, "Yrotation Zrotation Xrotation", "Yrotation Zrotation Wrotation"), 13,
+      {"unknown channel name",
+       replace(arm, "Yrotation Zrotation Xrotation", "Yrotation Zrotation Wrotation"), 13,
        "'Wrotation'"},
-      {"channel listed twice", replace(arm, "Xrotation Yrotation Zrotation", "Xrotation Yrotation Yrotation"), 9,
+      {"channel listed twice",
+       replace(arm, "Xrotation Yrotation Zrotation", "Xrotation Yrotation Yrotation"), 9,
        "listed twice"},
-      {"no rotation channels", replace(arm, "CHANNELS 3 Xrotation Yrotation Zrotation", "CHANNELS 3 Xposition Yposition Zposition"), 9,
-       "all three rotation channels"},
+      {"no rotation channels",
+       replace(arm, "CHANNELS 3 Xrotation Yrotation Zrotation",
+               "CHANNELS 3 Xposition Yposition Zposition"),
+       9, "all three rotation channels"},
       {"NaN in OFFSET", replace(arm, "OFFSET -27.0", "OFFSET nan"), 12, "not a finite number"},
       {"NaN in motion", replace(arm, "1.5 91.0", "1.5 NaN"), 34, "not a finite number"},
       {"inf in motion", replace(arm, "45 0 0 5", "45 0 inf 5"), 33, "not a finite number"},
-      {"overflowing number", replace(arm, "OFFSET 0 60 0", "OFFSET 0 1e999 0"), 22, "not a finite number"},
+      {"overflowing number", replace(arm, "OFFSET 0 60 0", "OFFSET 0 1e999 0"), 22,
+       "not a finite number"},
       {"huge number", replace(arm, "1.0 90.0", "1.0 9e12"), 33, "too large"},
       {"huge OFFSET", replace(arm, "OFFSET 0 20 0", "OFFSET 0 2e7 0"), 26, "too large"},
-      {"garbage number", replace(arm, "OFFSET -15.0 40.0", "OFFSET -15.0 4O.0"), 8, "expected a number"},
-      {"unknown keyword in a joint", replace(arm, "\t\tOFFSET -27.0", "\t\tSCALE 1 1 1\n\t\t\tOFFSET -27.0"), 12,
+      {"garbage number", replace(arm, "OFFSET -15.0 40.0", "OFFSET -15.0 4O.0"), 8,
+       "expected a number"},
+      {"unknown keyword in a joint",
+       replace(arm, "\t\tOFFSET -27.0", "\t\tSCALE 1 1 1\n\t\t\tOFFSET -27.0"), 12,
        "unknown keyword 'SCALE'"},
-      {"unknown keyword in HIERARCHY", replace(arm, "MOTION", "}\nMOTION"), 30, "unknown keyword '}'"},
-      {"missing opening brace", replace(arm, "JOINT Head\n\t{", "JOINT Head\n"), 22, "expected '{'"},
-      {"missing closing brace", replace(arm, "\t}\n}\nMOTION", "\t}\nMOTION"), 29, "missing '}' closing joint 'Hips'"},
+      {"unknown keyword in HIERARCHY", replace(arm, "MOTION", "}\nMOTION"), 30,
+       "unknown keyword '}'"},
+      {"missing opening brace", replace(arm, "JOINT Head\n\t{", "JOINT Head\n"), 22,
+       "expected '{'"},
+      {"missing closing brace", replace(arm, "\t}\n}\nMOTION", "\t}\nMOTION"), 29,
+       "missing '}' closing joint 'Hips'"},
       {"missing MOTION", replace(arm, "MOTION\n", ""), 30, "expected 'ROOT' or 'MOTION'"},
       {"missing Frame Time", replace(arm, "Frame Time: 0.033333\n", ""), 32, "expected 'Frame'"},
-      {"negative frame count", replace(arm, "Frames: 2", "Frames: -2"), 31, "non-negative whole number"},
-      {"forged huge frame count", replace(arm, "Frames: 2", "Frames: 999999999999"), 31, "exceeds the limit"},
-      {"zero frame time", replace(arm, "Frame Time: 0.033333", "Frame Time: 0"), 32, "must be positive"},
-      {"duplicate joint name", replace(arm, "JOINT Head", "JOINT RightArm"), 20, "duplicate joint name"},
+      {"negative frame count", replace(arm, "Frames: 2", "Frames: -2"), 31,
+       "non-negative whole number"},
+      {"forged huge frame count", replace(arm, "Frames: 2", "Frames: 999999999999"), 31,
+       "exceeds the limit"},
+      {"zero frame time", replace(arm, "Frame Time: 0.033333", "Frame Time: 0"), 32,
+       "must be positive"},
+      {"duplicate joint name", replace(arm, "JOINT Head", "JOINT RightArm"), 20,
+       "duplicate joint name"},
       {"no ROOT", "HIERARCHY\nMOTION\nFrames: 0\nFrame Time: 0.1\n", 2, "no ROOT"},
       {"missing OFFSET", replace(arm, "\t\t\tOFFSET -27.0 0.0 0.0\n", ""), 17, "has no OFFSET"},
-      {"End without Site", replace(arm, "End Site\n\t\t\t{", "End\n\t\t\t{"), 15, "expected 'Site'"},
-      {"binary garbage", std::string("HIERARCHY\nROOT \x01\x02\xff\n{\0\0", 22), 3, "'\\x01\\x02\\xff'"},
+      {"End without Site", replace(arm, "End Site\n\t\t\t{", "End\n\t\t\t{"), 15,
+       "expected 'Site'"},
+      {"binary garbage", std::string("HIERARCHY\nROOT \x01\x02\xff\n{\0\0", 22), 3,
+       "'\\x01\\x02\\xff'"},
   };
 }
 
@@ -293,7 +320,8 @@ TEST(BvhMalformed, CatalogueGivesLineAndClearMessage) {
     const BvhReadResult r = read_bvh(m.text);
     EXPECT_FALSE(r.ok) << m.what;
     EXPECT_EQ(r.error.line, m.line) << m.what << ": " << r.error.format();
-    EXPECT_NE(r.error.message.find(m.fragment), std::string::npos) << m.what << ": " << r.error.format();
+    EXPECT_NE(r.error.message.find(m.fragment), std::string::npos)
+        << m.what << ": " << r.error.format();
   }
 }
 
@@ -315,7 +343,8 @@ TEST(BvhMalformed, RandomByteMutationsNeverCrash) {
   const std::string arm = kArm;
   const int lines = 1 + static_cast<int>(std::count(arm.begin(), arm.end(), '\n'));
   std::mt19937 rng(99);
-  const char alphabet[] = "{}\n\t -.0123456789eEnaifJOINTEndSiteCHANNELS3 6XYZrotationposition:\0\xff";
+  const char alphabet[] =
+      "{}\n\t -.0123456789eEnaifJOINTEndSiteCHANNELS3 6XYZrotationposition:\0\xff";
   for (int i = 0; i < 3000; ++i) {
     std::string text = arm;
     const int edits = 1 + static_cast<int>(rng() % 4);
@@ -323,9 +352,15 @@ TEST(BvhMalformed, RandomByteMutationsNeverCrash) {
       const std::size_t at = rng() % text.size();
       const char c = alphabet[rng() % (sizeof alphabet - 1)];
       switch (rng() % 3) {
-        case 0: text[at] = c; break;
-        case 1: text.insert(at, 1, c); break;
-        default: text.erase(at, 1 + rng() % 8); break;
+        case 0:
+          text[at] = c;
+          break;
+        case 1:
+          text.insert(at, 1, c);
+          break;
+        default:
+          text.erase(at, 1 + rng() % 8);
+          break;
       }
     }
     const BvhReadResult r = read_bvh(text);
@@ -334,7 +369,8 @@ TEST(BvhMalformed, RandomByteMutationsNeverCrash) {
       EXPECT_LE(r.error.line, lines + 8);
       EXPECT_FALSE(r.error.message.empty());
     } else {
-      EXPECT_EQ(r.bvh.values.size(), std::size_t(r.bvh.frame_count) * std::size_t(r.bvh.channel_count()));
+      EXPECT_EQ(r.bvh.values.size(),
+                std::size_t(r.bvh.frame_count) * std::size_t(r.bvh.channel_count()));
     }
   }
 }
@@ -342,7 +378,8 @@ TEST(BvhMalformed, RandomByteMutationsNeverCrash) {
 std::string nested_chain(int depth) {
   std::string text = "HIERARCHY\n";
   for (int i = 0; i < depth; ++i) {
-    text += (i == 0 ? "ROOT j" : "JOINT j") + std::to_string(i) + "\n{\nOFFSET 0 1 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n";
+    text += (i == 0 ? "ROOT j" : "JOINT j") + std::to_string(i) +
+            "\n{\nOFFSET 0 1 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n";
   }
   for (int i = 0; i < depth; ++i) text += "}\n";
   text += "MOTION\nFrames: 1\nFrame Time: 0.1\n";

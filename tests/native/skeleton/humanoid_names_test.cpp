@@ -109,9 +109,11 @@ TEST(HumanoidNames, WholeRigMappingDetectsVrm0ThumbsAndIsInjective) {
   const std::vector<std::string> vrm0 = {"leftThumbProximal", "leftThumbIntermediate",
                                          "leftThumbDistal", "hips"};
   const std::vector<int> ids = map_humanoid_names(vrm0);
-  EXPECT_EQ(ids, (std::vector<int>{kLeftThumbMetacarpal, kLeftThumbProximal, kLeftThumbDistal, kHips}));
+  EXPECT_EQ(ids,
+            (std::vector<int>{kLeftThumbMetacarpal, kLeftThumbProximal, kLeftThumbDistal, kHips}));
 
-  const std::vector<std::string> vrm1 = {"leftThumbMetacarpal", "leftThumbProximal", "leftThumbDistal"};
+  const std::vector<std::string> vrm1 = {"leftThumbMetacarpal", "leftThumbProximal",
+                                         "leftThumbDistal"};
   EXPECT_EQ(map_humanoid_names(vrm1),
             (std::vector<int>{kLeftThumbMetacarpal, kLeftThumbProximal, kLeftThumbDistal}));
 
@@ -124,10 +126,12 @@ TEST(HumanoidNames, FingerJointIds) {
   EXPECT_EQ(finger_joint_id(true, Finger::Thumb, FingerSegment::Metacarpal), kLeftThumbMetacarpal);
   EXPECT_EQ(finger_joint_id(true, Finger::Thumb, FingerSegment::Intermediate), -1);
   EXPECT_EQ(finger_joint_id(true, Finger::Thumb, FingerSegment::Tip), kLeftThumbTip);
-  EXPECT_EQ(finger_joint_id(false, Finger::Index, FingerSegment::Metacarpal), kRightIndexMetacarpal);
+  EXPECT_EQ(finger_joint_id(false, Finger::Index, FingerSegment::Metacarpal),
+            kRightIndexMetacarpal);
   EXPECT_EQ(finger_joint_id(false, Finger::Middle, FingerSegment::Distal), kRightMiddleDistal);
   EXPECT_EQ(finger_joint_id(true, Finger::Little, FingerSegment::Tip), kLeftLittleTip);
-  EXPECT_EQ(finger_joint_id(true, Finger::Ring, FingerSegment::Intermediate), kLeftRingIntermediate);
+  EXPECT_EQ(finger_joint_id(true, Finger::Ring, FingerSegment::Intermediate),
+            kLeftRingIntermediate);
 }
 
 TEST(HumanoidNames, ParentsFormTheVrmTree) {

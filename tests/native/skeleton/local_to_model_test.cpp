@@ -5,8 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "skeleton/synthetic_humanoid.h"
 #include "../support/matrix_compare.h"
+#include "skeleton/synthetic_humanoid.h"
 
 namespace sw::skeleton {
 namespace {
@@ -50,7 +50,8 @@ TEST(LocalToModel, MatchesChainProductOnHumanoid) {
   const auto local = make_synthetic_pose(s, 7);
   const auto model = run_full(s, local);
   for (int i = 0; i < s.joint_count(); ++i) {
-    EXPECT_LT(max_abs_diff(model[static_cast<std::size_t>(i)], chain_product(s, local, i)), 1e-5f) << s.joints[static_cast<std::size_t>(i)].name;
+    EXPECT_LT(max_abs_diff(model[static_cast<std::size_t>(i)], chain_product(s, local, i)), 1e-5f)
+        << s.joints[static_cast<std::size_t>(i)].name;
   }
 }
 
@@ -81,7 +82,8 @@ TEST(LocalToModel, RootMatrixPlacesTheWholeBody) {
   job.root = &placement;
   ASSERT_TRUE(job.run());
   const auto unplaced = run_full(s, local);
-  for (std::size_t i = 0; i < out.size(); ++i) EXPECT_LT(max_abs_diff(out[i], placement * unplaced[i]), 1e-5f);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    EXPECT_LT(max_abs_diff(out[i], placement * unplaced[i]), 1e-5f);
 }
 
 TEST(LocalToModel, PartialUpdateOfAHandEqualsFullUpdate) {
@@ -92,7 +94,8 @@ TEST(LocalToModel, PartialUpdateOfAHandEqualsFullUpdate) {
   // "IK" changes the right hand and one of its fingers; only that sub-tree is recomputed.
   const int hand = s.find("rightHand");
   local[static_cast<std::size_t>(hand)].rotation = glm::angleAxis(0.9f, glm::vec3(0, 1, 0));
-  local[static_cast<std::size_t>(s.find("rightIndexIntermediate"))].rotation = glm::angleAxis(-0.5f, glm::vec3(0, 0, 1));
+  local[static_cast<std::size_t>(s.find("rightIndexIntermediate"))].rotation =
+      glm::angleAxis(-0.5f, glm::vec3(0, 0, 1));
   LocalToModelJob job;
   job.skeleton = &s;
   job.input = local;
@@ -101,18 +104,22 @@ TEST(LocalToModel, PartialUpdateOfAHandEqualsFullUpdate) {
   ASSERT_TRUE(job.run());
   const auto full = run_full(s, local);
   for (int i = 0; i < s.joint_count(); ++i) {
-    EXPECT_EQ(model[static_cast<std::size_t>(i)], full[static_cast<std::size_t>(i)]) << s.joints[static_cast<std::size_t>(i)].name;
+    EXPECT_EQ(model[static_cast<std::size_t>(i)], full[static_cast<std::size_t>(i)])
+        << s.joints[static_cast<std::size_t>(i)].name;
   }
   // ... and joints outside the sub-tree were not touched (the left hand's matrix is bit-identical).
-  EXPECT_EQ(model[static_cast<std::size_t>(s.find("leftHand"))], before[static_cast<std::size_t>(s.find("leftHand"))]);
-  EXPECT_NE(model[static_cast<std::size_t>(s.find("rightIndexTip"))], before[static_cast<std::size_t>(s.find("rightIndexTip"))]);
+  EXPECT_EQ(model[static_cast<std::size_t>(s.find("leftHand"))],
+            before[static_cast<std::size_t>(s.find("leftHand"))]);
+  EXPECT_NE(model[static_cast<std::size_t>(s.find("rightIndexTip"))],
+            before[static_cast<std::size_t>(s.find("rightIndexTip"))]);
 }
 
 TEST(LocalToModel, PartialUpdateWorksWhenTheSubtreeIsNotContiguous) {
   // Breadth-first order: parents before children, but a sub-tree's joints are interleaved with
   // others. The job must still update exactly the sub-tree.
   Skeleton s;
-  s.joints = {{"root", -1, {}}, {"a", 0, {}}, {"b", 0, {}}, {"a1", 1, {}}, {"b1", 2, {}}, {"a2", 3, {}}};
+  s.joints = {{"root", -1, {}}, {"a", 0, {}},  {"b", 0, {}},
+              {"a1", 1, {}},    {"b1", 2, {}}, {"a2", 3, {}}};
   for (auto& j : s.joints) j.rest.translation = {0.1f, 0.2f, 0.0f};
   auto local = std::vector<math::Transform>{};
   for (const auto& j : s.joints) local.push_back(j.rest);
@@ -144,8 +151,10 @@ TEST(LocalToModel, ToStopsThePass) {
   job.to = 8;  // torso and head only
   ASSERT_TRUE(job.run());
   const auto full = run_full(s, local);
-  for (int i = 0; i <= 8; ++i) EXPECT_EQ(out[static_cast<std::size_t>(i)], full[static_cast<std::size_t>(i)]);
-  for (int i = 9; i < s.joint_count(); ++i) EXPECT_EQ(out[static_cast<std::size_t>(i)], glm::mat4(0.0f));
+  for (int i = 0; i <= 8; ++i)
+    EXPECT_EQ(out[static_cast<std::size_t>(i)], full[static_cast<std::size_t>(i)]);
+  for (int i = 9; i < s.joint_count(); ++i)
+    EXPECT_EQ(out[static_cast<std::size_t>(i)], glm::mat4(0.0f));
 }
 
 TEST(LocalToModel, ValidateRejectsEveryInvalidConfiguration) {

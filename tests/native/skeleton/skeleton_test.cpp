@@ -41,7 +41,8 @@ TEST(Skeleton, ValidateNamesEachProblem) {
       {"empty name", [](Skeleton& s) { s.joints[1].name.clear(); }, "empty name"},
       {"nan", [](Skeleton& s) { s.joints[1].rest.translation.y = NAN; }, "non-finite"},
       {"inf scale", [](Skeleton& s) { s.joints[1].rest.scale.x = INFINITY; }, "non-finite"},
-      {"bad quaternion", [](Skeleton& s) { s.joints[1].rest.rotation = glm::quat(2, 0, 0, 0); }, "unit quaternion"},
+      {"bad quaternion", [](Skeleton& s) { s.joints[1].rest.rotation = glm::quat(2, 0, 0, 0); },
+       "unit quaternion"},
   };
   for (const Case& c : cases) {
     Skeleton s = chain();

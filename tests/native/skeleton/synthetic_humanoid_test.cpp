@@ -10,7 +10,8 @@ TEST(SyntheticHumanoid, HasSixtyFiveValidVrmNamedJoints) {
   const Skeleton s = make_synthetic_humanoid();
   EXPECT_EQ(s.joint_count(), 65);
   EXPECT_EQ(s.validate(), "");
-  for (const char* name : {"hips", "head", "leftHand", "rightLittleTip", "leftThumbMetacarpal", "rightToes"}) {
+  for (const char* name :
+       {"hips", "head", "leftHand", "rightLittleTip", "leftThumbMetacarpal", "rightToes"}) {
     EXPECT_GE(s.find(name), 0) << name;
   }
   // +X is the signer's left.
@@ -23,7 +24,9 @@ TEST(SyntheticHumanoid, FingerMetacarpalsAddEightJointsAndMoveNothing) {
   EXPECT_EQ(s73.joint_count(), 73);
   EXPECT_EQ(s73.validate(), "");
   const auto parent_name = [](const Skeleton& s, const char* joint) {
-    return s.joints[static_cast<std::size_t>(s.joints[static_cast<std::size_t>(s.find(joint))].parent)].name;
+    return s
+        .joints[static_cast<std::size_t>(s.joints[static_cast<std::size_t>(s.find(joint))].parent)]
+        .name;
   };
   EXPECT_EQ(parent_name(s73, "leftIndexProximal"), "leftIndexMetacarpal");
   EXPECT_EQ(parent_name(s65, "leftIndexProximal"), "leftHand");
@@ -32,7 +35,8 @@ TEST(SyntheticHumanoid, FingerMetacarpalsAddEightJointsAndMoveNothing) {
   for (std::size_t i = 0; i < s65.joints.size(); ++i) {
     const int j = s73.find(s65.joints[i].name);
     ASSERT_GE(j, 0) << s65.joints[i].name;
-    EXPECT_NEAR(glm::length(p65[i] - p73[static_cast<std::size_t>(j)]), 0.0f, 1e-6f) << s65.joints[i].name;
+    EXPECT_NEAR(glm::length(p65[i] - p73[static_cast<std::size_t>(j)]), 0.0f, 1e-6f)
+        << s65.joints[i].name;
   }
   EXPECT_NEAR(p65[static_cast<std::size_t>(s65.find("head"))].y, 1.56f, 1e-6f);
   EXPECT_NEAR(p65[static_cast<std::size_t>(s65.find("leftHand"))].x, 0.72f, 1e-6f);
@@ -40,7 +44,8 @@ TEST(SyntheticHumanoid, FingerMetacarpalsAddEightJointsAndMoveNothing) {
 
 TEST(SyntheticHumanoid, PoseIsDeterministicAndSeedDependent) {
   const Skeleton s = make_synthetic_humanoid();
-  const auto a = make_synthetic_pose(s, 42), b = make_synthetic_pose(s, 42), c = make_synthetic_pose(s, 43);
+  const auto a = make_synthetic_pose(s, 42), b = make_synthetic_pose(s, 42),
+             c = make_synthetic_pose(s, 43);
   ASSERT_EQ(a.size(), 65u);
   bool differs = false;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -60,7 +65,8 @@ TEST(SyntheticHumanoid, PoseDrawsAreSequencedPortably) {
   const math::Transform t = make_synthetic_pose(s, 1).front();
   const glm::vec3 axis = glm::axis(t.rotation);
   // The x draw comes first, so a reordering would permute these components.
-  EXPECT_NEAR(glm::angle(t.rotation), 0.0296305f, 1e-5f);  // from an independent Python model of the hash
+  EXPECT_NEAR(glm::angle(t.rotation), 0.0296305f,
+              1e-5f);  // from an independent Python model of the hash
   EXPECT_NEAR(axis.x, -0.198581f, 1e-4f);
 }
 

@@ -3,11 +3,11 @@
 
 #include <limits>
 
-#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/quaternion.hpp>
 
-#include "avatar/synthetic_avatar.h"
 #include "avatar/gltf_loader.h"
+#include "avatar/synthetic_avatar.h"
 #include "skeleton/humanoid_names.h"
 
 namespace sw::skinning {
@@ -26,7 +26,9 @@ TEST(AvatarInstance, RestUpdateReproducesTheBindMesh) {
   ASSERT_TRUE(instance.update()) << instance.error();
   ASSERT_EQ(instance.positions().size(), 3 * a.mesh.positions.size());
   for (std::size_t v = 0; v < a.mesh.positions.size(); ++v)
-    for (int k = 0; k < 3; ++k) ASSERT_NEAR(instance.positions()[3 * v + static_cast<std::size_t>(k)], a.mesh.positions[v][k], 1e-5f);
+    for (int k = 0; k < 3; ++k)
+      ASSERT_NEAR(instance.positions()[3 * v + static_cast<std::size_t>(k)], a.mesh.positions[v][k],
+                  1e-5f);
 }
 
 TEST(AvatarInstance, MorphWeightsMoveTheMeshBeforeSkinning) {
@@ -38,7 +40,8 @@ TEST(AvatarInstance, MorphWeightsMoveTheMeshBeforeSkinning) {
   int moved = 0;
   for (std::size_t v = 0; v < a.mesh.positions.size(); ++v) {
     const glm::vec3 expected = a.mesh.positions[v] + a.morphs[0].position_deltas[v];
-    for (int k = 0; k < 3; ++k) ASSERT_NEAR(instance.positions()[3 * v + static_cast<std::size_t>(k)], expected[k], 1e-5f);
+    for (int k = 0; k < 3; ++k)
+      ASSERT_NEAR(instance.positions()[3 * v + static_cast<std::size_t>(k)], expected[k], 1e-5f);
     if (a.morphs[0].position_deltas[v] != glm::vec3(0.0f)) ++moved;
   }
   EXPECT_GT(moved, 10);
@@ -52,7 +55,8 @@ TEST(AvatarInstance, PosedSimdAndScalarAgree) {
   AvatarInstance simd(a), scalar(a);
   const int shoulder = a.canonical_to_joint[skeleton::kRightUpperArm];
   for (AvatarInstance* i : {&simd, &scalar}) {
-    i->locals()[static_cast<std::size_t>(shoulder)].rotation = glm::angleAxis(1.0f, glm::vec3(0, 0, 1));
+    i->locals()[static_cast<std::size_t>(shoulder)].rotation =
+        glm::angleAxis(1.0f, glm::vec3(0, 0, 1));
     i->morph_weights()[1] = 0.5f;
   }
   ASSERT_TRUE(simd.update(SkinningPath::Simd));
@@ -71,15 +75,18 @@ TEST(AvatarInstance, AnchorsRideTheirJoint) {
   anchor.joint = hand;
   const glm::vec3 wrist(0.72f, 1.43f, 0.0f);  // the synthetic humanoid's left wrist, bind pose
   const glm::vec3 bind_point = wrist + glm::vec3(0.03f, -0.03f, 0.0f);
-  anchor.offset = glm::vec3(a.inverse_bind[static_cast<std::size_t>(hand)] * glm::vec4(bind_point, 1.0f));
+  anchor.offset =
+      glm::vec3(a.inverse_bind[static_cast<std::size_t>(hand)] * glm::vec4(bind_point, 1.0f));
   anchor.normal = {0, -1, 0};
   a.anchors.push_back(anchor);
   AvatarInstance instance(a);
   ASSERT_TRUE(instance.update());
   EXPECT_NEAR(instance.anchor_positions()[0], bind_point.x, 1e-5f);
   EXPECT_NEAR(instance.anchor_positions()[1], bind_point.y, 1e-5f);
-  // Turn the wrist 90° about +Z: the palm-down normal turns to +X, the point swings round the wrist.
-  instance.locals()[static_cast<std::size_t>(hand)].rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 0, 1));
+  // Turn the wrist 90° about +Z: the palm-down normal turns to +X, the point swings round the
+  // wrist.
+  instance.locals()[static_cast<std::size_t>(hand)].rotation =
+      glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 0, 1));
   ASSERT_TRUE(instance.update());
   EXPECT_NEAR(instance.anchor_normals()[0], 1.0f, 1e-5f);
   EXPECT_NEAR(instance.anchor_positions()[0], wrist.x + 0.03f, 1e-5f);

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
+#include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <gtest/gtest.h>
 
 #include "skinning/skinning_job.h"
 
@@ -33,7 +33,8 @@ struct Cylinder {
 };
 
 template <typename Job>
-Job make_job(const Cylinder& c, const std::vector<glm::mat4>& m, std::vector<float>& out_p, std::vector<float>& out_n) {
+Job make_job(const Cylinder& c, const std::vector<glm::mat4>& m, std::vector<float>& out_p,
+             std::vector<float>& out_n) {
   Job job;
   job.vertex_count = static_cast<int>(c.positions.size());
   job.skinning_matrices = m.data();
@@ -51,7 +52,8 @@ Job make_job(const Cylinder& c, const std::vector<glm::mat4>& m, std::vector<flo
 
 float min_radius(const std::vector<float>& p) {
   float r = 1e9f;
-  for (std::size_t v = 0; 3 * v < p.size(); ++v) r = std::min(r, std::hypot(p[3 * v + 1], p[3 * v + 2]));
+  for (std::size_t v = 0; 3 * v < p.size(); ++v)
+    r = std::min(r, std::hypot(p[3 * v + 1], p[3 * v + 2]));
   return r;
 }
 
@@ -73,8 +75,8 @@ TEST(DualQuaternionSkinningJob, TwistKeepsTheRadiusWhereLinearBlendPinches) {
   const Cylinder c;
   for (float degrees : {90.0f, 170.0f}) {
     // Joint 1 (the wrist end) twists about the cylinder's own axis.
-    const std::vector<glm::mat4> m = {glm::mat4(1.0f),
-                                      glm::mat4_cast(glm::angleAxis(glm::radians(degrees), glm::vec3(1, 0, 0)))};
+    const std::vector<glm::mat4> m = {
+        glm::mat4(1.0f), glm::mat4_cast(glm::angleAxis(glm::radians(degrees), glm::vec3(1, 0, 0)))};
     std::vector<float> dq_p, dq_n, lbs_p, lbs_n;
     ASSERT_TRUE(make_job<DualQuaternionSkinningJob>(c, m, dq_p, dq_n).run());
     auto lbs = make_job<SkinningJob>(c, m, lbs_p, lbs_n);
@@ -88,9 +90,10 @@ TEST(DualQuaternionSkinningJob, TwistKeepsTheRadiusWhereLinearBlendPinches) {
 TEST(DualQuaternionSkinningJob, RigidVerticesMatchLinearBlend) {
   Cylinder c;
   for (auto& w : c.weights) w = {1.0f, 0.0f, 0.0f, 0.0f};
-  const std::vector<glm::mat4> m = {glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, -0.2f, 1.0f)) *
-                                        glm::mat4_cast(glm::angleAxis(1.1f, glm::normalize(glm::vec3(1, 2, 3)))),
-                                    glm::mat4(1.0f)};
+  const std::vector<glm::mat4> m = {
+      glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, -0.2f, 1.0f)) *
+          glm::mat4_cast(glm::angleAxis(1.1f, glm::normalize(glm::vec3(1, 2, 3)))),
+      glm::mat4(1.0f)};
   std::vector<float> dq_p, dq_n, lbs_p, lbs_n;
   ASSERT_TRUE(make_job<DualQuaternionSkinningJob>(c, m, dq_p, dq_n).run());
   ASSERT_TRUE(make_job<SkinningJob>(c, m, lbs_p, lbs_n).run());
@@ -106,14 +109,27 @@ TEST(DualQuaternionSkinningJob, ValidateRejectsEveryBadConfiguration) {
   std::vector<float> p, n;
   const auto good = make_job<DualQuaternionSkinningJob>(c, m, p, n);
   ASSERT_EQ(good.validate(), "");
-  auto b = good; b.vertex_count = -1; EXPECT_NE(b.validate(), "");
-  b = good; b.skinning_matrices = nullptr; EXPECT_NE(b.validate(), "");
-  b = good; b.out_positions = nullptr; EXPECT_NE(b.validate(), "");
-  b = good; b.out_normals = nullptr; EXPECT_NE(b.validate(), "");
-  const std::vector<glm::mat4> scaled = {glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)), glm::mat4(1.0f)};
-  b = good; b.skinning_matrices = scaled.data(); EXPECT_NE(b.validate().find("not rigid"), std::string::npos);
+  auto b = good;
+  b.vertex_count = -1;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.skinning_matrices = nullptr;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.out_positions = nullptr;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.out_normals = nullptr;
+  EXPECT_NE(b.validate(), "");
+  const std::vector<glm::mat4> scaled = {glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)),
+                                         glm::mat4(1.0f)};
+  b = good;
+  b.skinning_matrices = scaled.data();
+  EXPECT_NE(b.validate().find("not rigid"), std::string::npos);
   c.joints[5][1] = 7;
-  b = good; b.joints = c.joints.data(); EXPECT_NE(b.validate().find("out of range"), std::string::npos);
+  b = good;
+  b.joints = c.joints.data();
+  EXPECT_NE(b.validate().find("out of range"), std::string::npos);
   EXPECT_FALSE(b.run());
 }
 

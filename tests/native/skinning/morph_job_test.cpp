@@ -61,8 +61,10 @@ TEST(MorphJob, VertexRangesSkipUnmovedVerticesWithTheSameResult) {
   Fixture f;
   const std::vector<VertexRange> ranges = morph_vertex_ranges(f.targets);
   ASSERT_EQ(ranges.size(), 2u);
-  EXPECT_EQ(ranges[0].first, 1u); EXPECT_EQ(ranges[0].end, 2u);
-  EXPECT_EQ(ranges[1].first, 1u); EXPECT_EQ(ranges[1].end, 3u);
+  EXPECT_EQ(ranges[0].first, 1u);
+  EXPECT_EQ(ranges[0].end, 2u);
+  EXPECT_EQ(ranges[1].first, 1u);
+  EXPECT_EQ(ranges[1].end, 3u);
   ASSERT_TRUE(f.job().run());
   const std::vector<glm::vec3> full = f.out;
   ASSERT_TRUE(f.job(ranges.data()).run());
@@ -72,19 +74,35 @@ TEST(MorphJob, VertexRangesSkipUnmovedVerticesWithTheSameResult) {
 TEST(MorphJob, ValidateRejectsEveryBadConfiguration) {
   Fixture f;
   ASSERT_EQ(f.job().validate(), "");
-  MorphJob j = f.job(); j.vertex_count = -1; EXPECT_NE(j.validate(), "");
-  j = f.job(); j.rest_positions = nullptr; EXPECT_NE(j.validate(), "");
-  j = f.job(); j.out_positions = nullptr; EXPECT_NE(j.validate(), "");
-  j = f.job(); j.out_normals = nullptr; EXPECT_NE(j.validate(), "");
-  j = f.job(); j.weights = nullptr; EXPECT_NE(j.validate(), "");
-  j = f.job(); j.vertex_count = 3; EXPECT_NE(j.validate(), "");  // delta counts differ
+  MorphJob j = f.job();
+  j.vertex_count = -1;
+  EXPECT_NE(j.validate(), "");
+  j = f.job();
+  j.rest_positions = nullptr;
+  EXPECT_NE(j.validate(), "");
+  j = f.job();
+  j.out_positions = nullptr;
+  EXPECT_NE(j.validate(), "");
+  j = f.job();
+  j.out_normals = nullptr;
+  EXPECT_NE(j.validate(), "");
+  j = f.job();
+  j.weights = nullptr;
+  EXPECT_NE(j.validate(), "");
+  j = f.job();
+  j.vertex_count = 3;
+  EXPECT_NE(j.validate(), "");  // delta counts differ
   f.weights[1] = std::numeric_limits<float>::quiet_NaN();
-  j = f.job(); EXPECT_NE(j.validate(), ""); EXPECT_FALSE(j.run());
+  j = f.job();
+  EXPECT_NE(j.validate(), "");
+  EXPECT_FALSE(j.run());
   f.weights[1] = 1.0f;
   const VertexRange bad_range[2] = {{0, 9}, {0, 1}};
-  j = f.job(bad_range); EXPECT_NE(j.validate(), "");
+  j = f.job(bad_range);
+  EXPECT_NE(j.validate(), "");
   f.targets[1].normal_deltas = {{0, 0, 0}};
-  j = f.job(); EXPECT_NE(j.validate(), "");
+  j = f.job();
+  EXPECT_NE(j.validate(), "");
 }
 
 }  // namespace

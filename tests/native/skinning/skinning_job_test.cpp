@@ -4,11 +4,11 @@
 
 #include <random>
 
-#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/quaternion.hpp>
 
-#include "avatar/synthetic_avatar.h"
 #include "avatar/gltf_loader.h"
+#include "avatar/synthetic_avatar.h"
 #include "skeleton/humanoid_names.h"
 #include "skeleton/local_to_model.h"
 #include "skinning/skinning_matrix_job.h"
@@ -26,14 +26,16 @@ const avatar::Avatar& humanoid() {
   return a;
 }
 
-std::vector<glm::mat4> palette(const avatar::Avatar& a, const std::vector<math::Transform>& locals) {
+std::vector<glm::mat4> palette(const avatar::Avatar& a,
+                               const std::vector<math::Transform>& locals) {
   std::vector<glm::mat4> models(locals.size()), skin(locals.size());
   skeleton::LocalToModelJob fk;
   fk.skeleton = &a.skeleton;
   fk.input = locals;
   fk.output = models;
   EXPECT_TRUE(fk.run());
-  SkinningMatrixJob sm{models.data(), a.inverse_bind.data(), static_cast<int>(locals.size()), skin.data()};
+  SkinningMatrixJob sm{models.data(), a.inverse_bind.data(), static_cast<int>(locals.size()),
+                       skin.data()};
   EXPECT_TRUE(sm.run());
   return skin;
 }
@@ -74,8 +76,10 @@ TEST_P(SkinningPaths, RestPoseSkinsToTheBindPose) {
   const Output out = skin(a, palette(a, rest_pose(a)), GetParam());
   for (std::size_t v = 0; v < a.mesh.positions.size(); ++v) {
     for (int k = 0; k < 3; ++k) {
-      ASSERT_NEAR(out.positions[3 * v + static_cast<std::size_t>(k)], a.mesh.positions[v][k], 1e-5f) << v;
-      ASSERT_NEAR(out.normals[3 * v + static_cast<std::size_t>(k)], a.mesh.normals[v][k], 1e-5f) << v;
+      ASSERT_NEAR(out.positions[3 * v + static_cast<std::size_t>(k)], a.mesh.positions[v][k], 1e-5f)
+          << v;
+      ASSERT_NEAR(out.normals[3 * v + static_cast<std::size_t>(k)], a.mesh.normals[v][k], 1e-5f)
+          << v;
     }
   }
 }
@@ -88,32 +92,41 @@ TEST_P(SkinningPaths, RotatingOneJointMovesOnlyTheVerticesItWeights) {
   std::vector<bool> moved_joint(a.skeleton.joints.size(), false);
   for (std::size_t j = 0; j < a.skeleton.joints.size(); ++j) {
     const int p = a.skeleton.joints[j].parent;
-    moved_joint[j] = static_cast<int>(j) == elbow || (p >= 0 && moved_joint[static_cast<std::size_t>(p)]);
+    moved_joint[j] =
+        static_cast<int>(j) == elbow || (p >= 0 && moved_joint[static_cast<std::size_t>(p)]);
   }
   std::vector<math::Transform> pose = rest_pose(a);
-  pose[static_cast<std::size_t>(elbow)].rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0));
+  pose[static_cast<std::size_t>(elbow)].rotation =
+      glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0));
   const Output rest = skin(a, palette(a, rest_pose(a)), GetParam());
   const Output bent = skin(a, palette(a, pose), GetParam());
   int moved = 0;
   for (std::size_t v = 0; v < a.mesh.positions.size(); ++v) {
     bool weighted = false;
     for (int k = 0; k < 4; ++k) {
-      if (a.mesh.weights[v][k] > 0.0f && moved_joint[a.mesh.joints[v][static_cast<std::size_t>(k)]]) weighted = true;
+      if (a.mesh.weights[v][k] > 0.0f && moved_joint[a.mesh.joints[v][static_cast<std::size_t>(k)]])
+        weighted = true;
     }
-    const glm::vec3 before(rest.positions[3 * v], rest.positions[3 * v + 1], rest.positions[3 * v + 2]);
-    const glm::vec3 after(bent.positions[3 * v], bent.positions[3 * v + 1], bent.positions[3 * v + 2]);
+    const glm::vec3 before(rest.positions[3 * v], rest.positions[3 * v + 1],
+                           rest.positions[3 * v + 2]);
+    const glm::vec3 after(bent.positions[3 * v], bent.positions[3 * v + 1],
+                          bent.positions[3 * v + 2]);
     if (weighted) {
       // Every such vertex lies beyond the elbow axis' pivot (x > 0.44), so a 90° turn moves it.
       if (glm::length(after - before) > 1e-3f) ++moved;
     } else {
-      ASSERT_LT(glm::length(after - before), 1e-6f) << "vertex " << v << " is not weighted on the forearm";
+      ASSERT_LT(glm::length(after - before), 1e-6f)
+          << "vertex " << v << " is not weighted on the forearm";
     }
   }
   EXPECT_GT(moved, 100);
 }
 
-INSTANTIATE_TEST_SUITE_P(Both, SkinningPaths, ::testing::Values(SkinningPath::Scalar, SkinningPath::Simd),
-                         [](const auto& info) { return info.param == SkinningPath::Scalar ? "Scalar" : "Simd"; });
+INSTANTIATE_TEST_SUITE_P(Both, SkinningPaths,
+                         ::testing::Values(SkinningPath::Scalar, SkinningPath::Simd),
+                         [](const auto& info) {
+                           return info.param == SkinningPath::Scalar ? "Scalar" : "Simd";
+                         });
 
 TEST(SkinningJob, SimdEqualsScalarOnARandomPose) {
   const avatar::Avatar& a = humanoid();
@@ -121,7 +134,9 @@ TEST(SkinningJob, SimdEqualsScalarOnARandomPose) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> angle(-1.5f, 1.5f);
   std::vector<math::Transform> pose = rest_pose(a);
-  for (auto& t : pose) t.rotation = glm::angleAxis(angle(rng), glm::normalize(glm::vec3(angle(rng), angle(rng), angle(rng) + 2.0f)));
+  for (auto& t : pose)
+    t.rotation = glm::angleAxis(
+        angle(rng), glm::normalize(glm::vec3(angle(rng), angle(rng), angle(rng) + 2.0f)));
   const std::vector<glm::mat4> matrices = palette(a, pose);
   const Output scalar = skin(a, matrices, SkinningPath::Scalar);
   const Output simd = skin(a, matrices, SkinningPath::Simd);
@@ -140,13 +155,22 @@ TEST(SkinningJob, SimdWritesNothingPastTheLastVertex) {
   const std::vector<glm::vec4> w(3, {1, 0, 0, 0});
   std::vector<float> out(10, -7.0f), out_n(10, -7.0f);
   SkinningJob job;
-  job.vertex_count = 3; job.skinning_matrices = &m; job.joint_count = 1;
-  job.in_positions = p.data(); job.in_normals = p.data(); job.joints = j.data(); job.weights = w.data();
-  job.out_positions = out.data(); job.out_normals = out_n.data(); job.path = SkinningPath::Simd;
+  job.vertex_count = 3;
+  job.skinning_matrices = &m;
+  job.joint_count = 1;
+  job.in_positions = p.data();
+  job.in_normals = p.data();
+  job.joints = j.data();
+  job.weights = w.data();
+  job.out_positions = out.data();
+  job.out_normals = out_n.data();
+  job.path = SkinningPath::Simd;
   ASSERT_TRUE(job.run());
   EXPECT_EQ(out[9], -7.0f);
   EXPECT_EQ(out_n[9], -7.0f);
-  EXPECT_EQ(out[6], 3.0f); EXPECT_EQ(out[7], 4.0f); EXPECT_EQ(out[8], 5.0f);
+  EXPECT_EQ(out[6], 3.0f);
+  EXPECT_EQ(out[7], 4.0f);
+  EXPECT_EQ(out[8], 5.0f);
   EXPECT_EQ(out_n[6], 2.0f);  // normals ignore translation
 }
 
@@ -157,20 +181,46 @@ TEST(SkinningJob, ValidateRejectsEveryBadConfiguration) {
   const std::vector<glm::vec4> w(2, {1, 0, 0, 0});
   std::vector<float> out(6), out_n(6);
   SkinningJob good;
-  good.vertex_count = 2; good.skinning_matrices = &m; good.joint_count = 1;
-  good.in_positions = p.data(); good.in_normals = p.data(); good.joints = j.data(); good.weights = w.data();
-  good.out_positions = out.data(); good.out_normals = out_n.data();
+  good.vertex_count = 2;
+  good.skinning_matrices = &m;
+  good.joint_count = 1;
+  good.in_positions = p.data();
+  good.in_normals = p.data();
+  good.joints = j.data();
+  good.weights = w.data();
+  good.out_positions = out.data();
+  good.out_normals = out_n.data();
   ASSERT_EQ(good.validate(), "");
-  SkinningJob b = good; b.vertex_count = -1; EXPECT_NE(b.validate(), "");
-  b = good; b.skinning_matrices = nullptr; EXPECT_NE(b.validate(), "");
-  b = good; b.joint_count = 0; EXPECT_NE(b.validate(), "");
-  b = good; b.in_positions = nullptr; EXPECT_NE(b.validate(), "");
-  b = good; b.joints = nullptr; EXPECT_NE(b.validate(), "");
-  b = good; b.weights = nullptr; EXPECT_NE(b.validate(), "");
-  b = good; b.out_positions = nullptr; EXPECT_NE(b.validate(), "");
-  b = good; b.out_normals = nullptr; EXPECT_NE(b.validate(), "");
-  b = good; b.out_normals = out.data(); EXPECT_NE(b.validate(), "");  // outputs overlap
-  b = good; b.out_positions = reinterpret_cast<float*>(const_cast<glm::vec3*>(p.data())); EXPECT_NE(b.validate(), "");
+  SkinningJob b = good;
+  b.vertex_count = -1;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.skinning_matrices = nullptr;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.joint_count = 0;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.in_positions = nullptr;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.joints = nullptr;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.weights = nullptr;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.out_positions = nullptr;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.out_normals = nullptr;
+  EXPECT_NE(b.validate(), "");
+  b = good;
+  b.out_normals = out.data();
+  EXPECT_NE(b.validate(), "");  // outputs overlap
+  b = good;
+  b.out_positions = reinterpret_cast<float*>(const_cast<glm::vec3*>(p.data()));
+  EXPECT_NE(b.validate(), "");
   EXPECT_FALSE(b.run());
 }
 

@@ -1,8 +1,8 @@
 // Tests for skinning/skinning_matrix_job.h: the palette and every invalid job.
 #include "skinning/skinning_matrix_job.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace sw::skinning {
 namespace {
@@ -14,10 +14,19 @@ TEST(SkinningMatrixJob, ModelTimesInverseBind) {
   SkinningMatrixJob job{models.data(), ibm.data(), 1, out.data()};
   ASSERT_TRUE(job.run());
   EXPECT_EQ(out[0], glm::mat4(1.0f));
-  SkinningMatrixJob bad = job; bad.models = nullptr; EXPECT_NE(bad.validate(), ""); EXPECT_FALSE(bad.run());
-  bad = job; bad.inverse_binds = nullptr; EXPECT_NE(bad.validate(), "");
-  bad = job; bad.skinning_matrices = nullptr; EXPECT_NE(bad.validate(), "");
-  bad = job; bad.joint_count = -1; EXPECT_NE(bad.validate(), "");
+  SkinningMatrixJob bad = job;
+  bad.models = nullptr;
+  EXPECT_NE(bad.validate(), "");
+  EXPECT_FALSE(bad.run());
+  bad = job;
+  bad.inverse_binds = nullptr;
+  EXPECT_NE(bad.validate(), "");
+  bad = job;
+  bad.skinning_matrices = nullptr;
+  EXPECT_NE(bad.validate(), "");
+  bad = job;
+  bad.joint_count = -1;
+  EXPECT_NE(bad.validate(), "");
 }
 
 }  // namespace
