@@ -1,6 +1,8 @@
 // UTF-8 validation, decoding, lower-casing and character classes (see utf8_text.h).
 #include "store/utf8_text.h"
 
+#include "text/utf8.h"
+
 namespace sw::store {
 
 std::size_t find_invalid_utf8(std::string_view text) {
@@ -59,23 +61,7 @@ std::vector<char32_t> decode_utf8(std::string_view text) {
   return out;
 }
 
-void append_utf8(std::string& out, char32_t cp) {
-  if (cp < 0x80) {
-    out.push_back(static_cast<char>(cp));
-  } else if (cp < 0x800) {
-    out.push_back(static_cast<char>(0xC0 | (cp >> 6)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else if (cp < 0x10000) {
-    out.push_back(static_cast<char>(0xE0 | (cp >> 12)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else {
-    out.push_back(static_cast<char>(0xF0 | (cp >> 18)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 12) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  }
-}
+void append_utf8(std::string& out, char32_t cp) { sw::text::append_utf8(&out, cp); }
 
 std::string encode_utf8(const std::vector<char32_t>& code_points) {
   std::string out;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "text/utf8.h"
+
 namespace sw::notation {
 
 char32_t decode_utf8(std::string_view text, std::size_t* offset) {
@@ -49,21 +51,7 @@ char32_t decode_utf8(std::string_view text, std::size_t* offset) {
 
 void append_utf8(std::string* out, char32_t cp) {
   if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) cp = 0xFFFD;
-  if (cp < 0x80) {
-    out->push_back(static_cast<char>(cp));
-  } else if (cp < 0x800) {
-    out->push_back(static_cast<char>(0xC0 | (cp >> 6)));
-    out->push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else if (cp < 0x10000) {
-    out->push_back(static_cast<char>(0xE0 | (cp >> 12)));
-    out->push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    out->push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else {
-    out->push_back(static_cast<char>(0xF0 | (cp >> 18)));
-    out->push_back(static_cast<char>(0x80 | ((cp >> 12) & 0x3F)));
-    out->push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    out->push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  }
+  sw::text::append_utf8(out, cp);
 }
 
 std::string code_point_label(char32_t cp) {

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "notation/parse.h"
+#include "text/utf8.h"
 
 namespace sw::synthesis {
 namespace {
@@ -25,20 +26,7 @@ int utf8_next(std::string_view text, size_t i, char32_t* cp) {
 
 std::string utf8_encode(char32_t cp) {
   std::string s;
-  if (cp < 0x80) s.push_back(static_cast<char>(cp));
-  else if (cp < 0x800) {
-    s.push_back(static_cast<char>(0xC0 | (cp >> 6)));
-    s.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else if (cp < 0x10000) {
-    s.push_back(static_cast<char>(0xE0 | (cp >> 12)));
-    s.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    s.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else {
-    s.push_back(static_cast<char>(0xF0 | (cp >> 18)));
-    s.push_back(static_cast<char>(0x80 | ((cp >> 12) & 0x3F)));
-    s.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    s.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  }
+  sw::text::append_utf8(&s, cp);
   return s;
 }
 
