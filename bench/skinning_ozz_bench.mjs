@@ -7,10 +7,11 @@
 // ours as the project builds it (native -O3; WASM -O3 -msimd128 -mbulk-memory
 // -mnontrapping-fptoint), ozz natively at -O3 and in WASM at -O2 -msimd128 -msse2 (its SSE2 path
 // on WebAssembly SIMD; em++ 3.1.6 has been seen to take over 10 minutes on -O3, see the peer's
-// README), the harness itself at -O0 in WASM for the same reason. Skipped with a message when the
-// peer or a compiler is absent.
+// README), the harness itself at -O0 in WASM for the same reason; node runs the WASM driver with
+// --no-experimental-fetch (Emscripten 3.1.6's glue would fetch() its .wasm by path). Skipped with
+// a message when the peer or a compiler is absent.
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, statSync, symlinkSync } from 'node:fs';
+import { existsSync, mkdirSync, statSync, symlinkSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 
 import { ROOT, SHARED } from './real_signs.mjs';
@@ -27,7 +28,7 @@ const DEFINES = ['-DNDEBUG', '-DGLM_FORCE_RADIANS', '-DGLM_ENABLE_EXPERIMENTAL']
 const say = (msg) => process.stderr.write(`skinning_vs_ozz: ${msg}\n`);
 function run(cmd, args, options = {}) {
   const r = spawnSync(cmd, args, { encoding: 'utf8', maxBuffer: 1 << 26, ...options });
-  if (r.status !== 0) throw new Error(`${cmd} ${args.join(' ')}\n${r.stderr || r.error}`);
+  if (r.status !== 0) throw new Error(`${cmd} ${args.join(' ')}\n${String(r.stderr || r.error).slice(-2000)}`);
   return r.stdout;
 }
 const newer = (target, sources) =>
@@ -48,6 +49,8 @@ function buildWasm() {
   const js = path.join(dir, 'skinning_vs_ozz.js');
   if (newer(js, [DRIVER, OURS, ...OZZ_SOURCES])) return js;
   mkdirSync(dir, { recursive: true });
+  // Emscripten's glue is CommonJS; the repository's package.json says "type": "module".
+  writeFileSync(path.join(dir, 'package.json'), '{ "type": "commonjs" }\n');
   // TOOLCHAIN.md trap 2: Emscripten hides /usr/include; give it glm alone.
   const sysinc = path.join(dir, 'sysinc');
   mkdirSync(sysinc, { recursive: true });
@@ -57,8 +60,9 @@ function buildWasm() {
   const objects = [];
   for (const src of OZZ_SOURCES) {
     const obj = path.join(dir, `ozz_${path.basename(src, '.cc')}.o`);
-    run('em++', ['-std=c++17', '-O2', '-msimd128', '-msse2', ...DEFINES, ...includes, '-c', src, '-o', obj], { env });
     objects.push(obj);
+    if (newer(obj, [src])) continue;
+    run('em++', ['-std=c++17', '-O2', '-msimd128', '-msse2', ...DEFINES, ...includes, '-c', src, '-o', obj], { env });
   }
   const ours = path.join(dir, 'ours_skinning_job.o');
   run('em++', ['-std=c++17', '-O3', '-msimd128', '-mbulk-memory', '-mnontrapping-fptoint', '-DSIGNWEAVE_SIMD=1', ...DEFINES,
@@ -79,7 +83,7 @@ if (!existsSync(path.join(OZZ, 'include', 'ozz'))) {
   } else {
     if (has('g++')) process.stdout.write(run(buildNative(), [INPUTS, 'native']));
     else say('native skipped, no g++');
-    if (has('em++')) process.stdout.write(run('node', [buildWasm(), INPUTS, 'wasm_simd']));
+    if (has('em++')) process.stdout.write(run('node', ['--no-experimental-fetch', buildWasm(), INPUTS, 'wasm_simd']));
     else say('WebAssembly skipped, no em++');
   }
 }

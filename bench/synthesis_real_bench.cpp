@@ -4,9 +4,10 @@
 // look-up compiles it (synthCompile): its text parsed, then synthesised from rest and back on the
 // project's avatar. CPU ms per sign (mean of SIGNWEAVE_BENCH_CALLS calls, default 3, after one
 // warm-up call): mean, median, p95 and worst per corpus and overall, and the same per clip frame.
-// Per-sign figures also go to build/bench/real-signs-native.jsonl, for the comparison with the
-// reference engine (bench/synthesis_real_bench.mjs). Skipped with a message when the sample is
-// absent (no ../shared/corpus). bench/synthesis_real_bench.mjs is the WASM twin.
+// Per-sign figures also go to build/bench/real-signs-native.jsonl (or $SIGNWEAVE_REAL_SIGNS_OUT),
+// for the comparison with the reference engine (bench/synthesis_real_bench.mjs). Skipped with a
+// message when the sample is absent (no ../shared/corpus). bench/synthesis_real_bench.mjs is the
+// WASM twin.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -99,7 +100,8 @@ SW_BENCH("synthesis_real") {
   };
   std::map<std::string, std::vector<Timed>> by_corpus;
   std::map<std::string, int> failed;
-  std::ofstream per_sign(build_path("real-signs-native.jsonl"));
+  const char* out_env = std::getenv("SIGNWEAVE_REAL_SIGNS_OUT");  // e.g. /dev/null under a profiler
+  std::ofstream per_sign(out_env ? std::string(out_env) : build_path("real-signs-native.jsonl"));
   for (const RealSign& s : sample) {
     const int frames = compile(s.text);  // warm-up, and the sign's frame count
     if (frames <= 0) {

@@ -64,7 +64,7 @@ function timeOurs(core, avatarId, signs) {
     core.synthClipFree(warm.id);
     const start = cpuMs();
     for (let i = 0; i < CALLS; ++i) core.synthClipFree(core.synthCompile(avatarId, s.text, {}).id);
-    timed.set(key(s), { corpus: s.corpus, ms: (cpuMs() - start) / CALLS, frames: warm.frames });
+    timed.set(key(s), { corpus: s.corpus, ms: (cpuMs() - start) / CALLS, frames: warm.frames, gloss: s.gloss });
   }
   return timed;
 }
@@ -87,11 +87,14 @@ function gesturalFiles(signs) {
   mkdirSync(hdir, { recursive: true });
   const files = new Map();
   const toConvert = [];
+  // Signs HtoG rejected in an earlier run are not tried again.
+  const rejectedFile = path.join(WORK, 'htog-rejected.txt');
+  const rejected = new Set(existsSync(rejectedFile) ? readFileSync(rejectedFile, 'utf8').split('\n') : []);
   for (const s of signs) {
     const base = `${s.corpus}-${String(s.index).padStart(5, '0')}`;
     const out = path.join(dir, `${base}.sigml`);
     if (s.sigml.includes('<hamgestural_sign')) writeFileSync(out, s.sigml);
-    else if (!existsSync(out)) {
+    else if (!existsSync(out) && !rejected.has(out)) {
       writeFileSync(path.join(hdir, `${base}.sigml`), s.sigml);
       toConvert.push(path.join(hdir, `${base}.sigml`));
     }
@@ -102,7 +105,12 @@ function gesturalFiles(signs) {
     writeFileSync(path.join(WORK, 'htog-list.txt'), toConvert.join('\n') + '\n');
     agbatch(['--gsigml', dir, '--results', path.join(WORK, 'htog.results.jsonl'), '--list', path.join(WORK, 'htog-list.txt')]);
   }
-  for (const [k, f] of files) if (!existsSync(f)) files.delete(k);  // HtoG rejected it
+  for (const [k, f] of files) {
+    if (existsSync(f)) continue;
+    rejected.add(f);  // HtoG rejected it
+    files.delete(k);
+  }
+  writeFileSync(rejectedFile, [...rejected].filter(Boolean).join('\n') + '\n');
   return files;
 }
 
@@ -164,6 +172,11 @@ if (signs.length === 0 || !existsSync(MODEL)) {
     if (avatar.error !== undefined) throw new Error(`avatar: ${avatar.error}`);
     ours[flavour] = timeOurs(core, avatar.id, signs);
     printCorpusStats('synthesis_real', signs, ours[flavour], `wasm_cpu_${flavour}`);
+    // The slowest signs on stderr (stdout stays JSON lines): where the next profile should look.
+    const slowest = [...ours[flavour]].sort((a, b) => b[1].ms - a[1].ms).slice(0, 5);
+    for (const [k, t] of slowest) {
+      process.stderr.write(`synthesis_real_wasm_${flavour}: ${k} ${t.gloss} ${t.ms.toFixed(2)} ms, ${t.frames} frames\n`);
+    }
   }
   const animgen = timeAnimgen(signs);
   // The native bench's per-sign figures of this run (bench/synthesis_real_bench.cpp), when written.

@@ -14,11 +14,10 @@
 //   avatar_weights    the avatar's own weights. Ours skips the zero weights per vertex; ozz is run
 //                     as its own samples run it, the mesh split into parts by influence count
 //                     (one job per part, influences_count 1..4), which is ozz at its best.
-// Timing: CPU time (clock(); wall time in WebAssembly, where Emscripten emulates it) of whole
-// passes, best of 7 rounds of 0.3 s after 20 warm-up passes, the method of ozz's own driver; the
-// engines alternate round by round so that the machine's load falls on both alike.
-// Prints JSON lines {"name","value","unit"}; argv[1] the input file, argv[2] a label ("native",
-// "wasm_simd").
+// Timing: process CPU time (cpu_seconds()) of whole passes, best of 7 rounds of 0.3 s after 20
+// warm-up passes, the method of ozz's own driver; the engines alternate round by round so that the
+// machine's load falls on both alike. Prints JSON lines {"name","value","unit"}; argv[1] the input
+// file, argv[2] a label ("native", "wasm_simd").
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,6 +28,10 @@
 #include <functional>
 #include <string>
 #include <vector>
+
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
 
 #include "ozz/base/maths/simd_math.h"
 #include "ozz/base/span.h"
@@ -120,7 +123,18 @@ Inputs partition_by_influences(const Inputs& in, std::array<int, 5>* part_start)
   return out;
 }
 
-double seconds_of(std::clock_t c) { return double(c) / CLOCKS_PER_SEC; }
+// Process CPU seconds: clock() natively; in WebAssembly node's process.cpuUsage(), since
+// Emscripten's clock() is wall time, which on a shared machine also counts the other processes.
+double cpu_seconds() {
+#if defined(__EMSCRIPTEN__)
+  return EM_ASM_DOUBLE({
+    const u = process.cpuUsage();
+    return (u.user + u.system) / 1e6;
+  });
+#else
+  return double(std::clock()) / CLOCKS_PER_SEC;
+#endif
+}
 
 // Best ns per vertex of each body over 7 alternating rounds of 0.3 s.
 std::vector<double> best_ns_per_vertex(const std::vector<std::function<void()>>& bodies,
@@ -131,13 +145,13 @@ std::vector<double> best_ns_per_vertex(const std::vector<std::function<void()>>&
   }
   for (int round = 0; round < 7; ++round) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      const std::clock_t start = std::clock();
+      const double start = cpu_seconds();
       long passes = 0;
-      while (seconds_of(std::clock() - start) < 0.3) {
+      while (cpu_seconds() - start < 0.3) {
         bodies[b]();
         ++passes;
       }
-      const double ns = seconds_of(std::clock() - start) * 1e9 / double(passes) / vertices;
+      const double ns = (cpu_seconds() - start) * 1e9 / double(passes) / vertices;
       if (ns < best[b]) best[b] = ns;
     }
   }
@@ -193,6 +207,33 @@ int main(int argc, char** argv) {
   if (!ozz_four.Validate() || !ours.validate().empty()) {
     std::fprintf(stderr, "skinning_vs_ozz: invalid job\n");
     return 1;
+  }
+  if (argc > 3 && std::strcmp(argv[3], "--passes-only") == 0) {
+    // For an instruction count (callgrind): 50 passes of each job and workload, no timing.
+    std::array<int, 5> part{};
+    const Inputs parted = partition_by_influences(in, &part);
+    std::vector<ozz::geometry::SkinningJob> ozz_parts;
+    for (int k = 1; k <= 4; ++k) {
+      const int count = part[std::size_t(k)] - part[std::size_t(k - 1)];
+      if (count > 0)
+        ozz_parts.push_back(ozz_job(parted, parted.weights, ozz_matrices, part[std::size_t(k - 1)],
+                                    count, k, &ozz_p, &ozz_n));
+    }
+    const bool four_only = argc > 4 && std::strcmp(argv[4], "four") == 0;
+    const bool avatar_only = argc > 4 && std::strcmp(argv[4], "avatar") == 0;
+    for (int i = 0; i < 50; ++i) {
+      if (!avatar_only) {
+        ours.weights = four.data();
+        ours.run();
+        ozz_four.Run();
+      }
+      if (!four_only) {
+        ours.weights = in.weights.data();
+        ours.run();
+        for (const auto& job : ozz_parts) job.Run();
+      }
+    }
+    return 0;
   }
   const std::vector<double> four_ns =
       best_ns_per_vertex({[&] { ours.run(); }, [&] { ozz_four.Run(); }}, in.vertices);
