@@ -115,6 +115,7 @@ json token_to_json(const store::LookupToken& token) {
       out["sign_id"] = token.sign_id;
       out["gloss"] = token.gloss;
       out["alternatives"] = token.alternatives;
+      out["match"] = json{{"type", token.match_type}, {"form", token.match_form}, {"text", token.match_text}};
       break;
     case store::LookupToken::Type::Fingerspell: {
       out["type"] = "fingerspell";
