@@ -198,6 +198,7 @@ int main(int argc, char** argv) {
     }
     if (fresh) fill_from_data(*store, flags.data_dir);
     ensure_admin_token(*store, flags);
+    store->prepare_search();
   } catch (const sw::store::ApiError& error) {
     std::fprintf(stderr, "signweave-server: %s\n", error.what());
     return 1;

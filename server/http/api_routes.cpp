@@ -1,6 +1,7 @@
 // Request routing and the API handlers (see api_routes.h).
 #include "http/api_routes.h"
 
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include "http/json_reply.h"
 #include "store/api_error.h"
 #include "store/data_import.h"
+#include "store/sign_export.h"
 #include "store/sign_json.h"
 #include "store/sign_validation.h"
 #include "store/utf8_text.h"
@@ -115,6 +117,7 @@ json token_to_json(const store::LookupToken& token) {
       out["sign_id"] = token.sign_id;
       out["gloss"] = token.gloss;
       out["alternatives"] = token.alternatives;
+      out["match"] = json{{"type", token.match_type}, {"form", token.match_form}, {"text", token.match_text}};
       break;
     case store::LookupToken::Type::Fingerspell: {
       out["type"] = "fingerspell";
@@ -326,8 +329,46 @@ void ApiRoutes::search_signs(const httplib::Request& req, httplib::Response& res
   reply_json(res, 200, body);
 }
 
+// GET /api/signs/{id}?format=: the sign as a notation file to download (store/sign_export.h).
+static void reply_export(const httplib::Request& req, httplib::Response& res, const store::SignRecord& sign) {
+  if (sign.deleted) {
+    throw ApiError(410, "sign " + std::to_string(sign.id) + " was deleted",
+                   json{{"id", sign.id}, {"current_revision", sign.revision}});
+  }
+  std::string format = param(req, "format");
+  store::SignExport exported = store::export_sign(sign, format);
+  std::string etag = "\"" + std::to_string(sign.revision) + "-" + format + "\"";
+  res.set_header("ETag", etag);
+  res.set_header("Cache-Control", "no-cache");
+  // RFC 6266: an ASCII name for old clients, the gloss's own (UTF-8, percent-encoded) for the rest.
+  std::string encoded;
+  for (unsigned char c : exported.file_name) {
+    static const char kHex[] = "0123456789ABCDEF";
+    if (std::isalnum(c) || c == '.' || c == '-' || c == '_') {
+      encoded.push_back(static_cast<char>(c));
+    } else {
+      encoded += {'%', kHex[c >> 4], kHex[c & 15]};
+    }
+  }
+  std::string ascii_name = "sign-" + std::to_string(sign.id) + exported.file_name.substr(exported.file_name.find('.'));
+  res.set_header("Content-Disposition",
+                 "attachment; filename=\"" + ascii_name + "\"; filename*=UTF-8''" + encoded);
+  if (req.get_header_value("If-None-Match") == etag) {
+    res.status = 304;
+    return;
+  }
+  res.status = 200;
+  res.set_content(exported.body, exported.content_type);
+}
+
 void ApiRoutes::get_sign(const httplib::Request& req, httplib::Response& res, std::int64_t id) {
-  check_params(req, {});
+  check_params(req, {"format"});
+  if (req.has_param("format")) {
+    std::optional<store::SignRecord> sign = store_.get_sign(id);
+    if (!sign) throw ApiError(404, "no sign with id " + std::to_string(id), json{{"id", id}});
+    reply_export(req, res, *sign);
+    return;
+  }
   // Why 20000 entries: several times the largest lexicon we ship; past it the cache starts over
   // rather than growing with every id a client invents.
   constexpr std::size_t kMaxCachedSigns = 20000;

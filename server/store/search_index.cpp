@@ -14,6 +14,7 @@
 #include "store/sign_record.h"
 #include "store/sqlite_db.h"
 #include "store/utf8_text.h"
+#include "store/word_forms.h"
 
 namespace sw::store {
 namespace {
@@ -39,8 +40,8 @@ std::vector<TextItem> scan_text(const std::vector<char32_t>& cps) {
   while (i < n) {
     if (is_word_char(cps[i])) {
       std::size_t begin = i;
-      while (i < n && (is_word_char(cps[i]) ||
-                       (is_word_joiner(cps[i]) && i + 1 < n && is_word_char(cps[i + 1]) && i > begin))) {
+      while (i < n && (is_word_char(cps[i]) || (is_word_joiner(cps[i]) && i + 1 < n &&
+                                                is_word_char(cps[i + 1]) && i > begin))) {
         ++i;
       }
       items.push_back({TextItem::Kind::Word, begin, i, 0.0});
@@ -88,6 +89,48 @@ std::string phrase_key(const std::string& text, int* word_count) {
   return key;
 }
 
+// The words of a phrase key ("thank you" -> {"thank", "you"}).
+std::vector<std::string> split_words(const std::string& key) {
+  std::vector<std::string> words;
+  std::size_t start = 0;
+  while (start <= key.size()) {
+    std::size_t end = key.find(' ', start);
+    if (end == std::string::npos) end = key.size();
+    if (end > start) words.push_back(key.substr(start, end - start));
+    start = end + 1;
+  }
+  return words;
+}
+
+// Each word followed by its base forms: {{"signed", "sign"}, {"books", "book"}}.
+std::vector<std::vector<std::string>> forms_of(const std::vector<std::string>& words,
+                                               const std::string& spoken) {
+  std::vector<std::vector<std::string>> forms;
+  for (const std::string& word : words) {
+    std::vector<std::string> alternatives{word};
+    for (std::string& stem : WordForms::shared().stems(spoken, word))
+      alternatives.push_back(std::move(stem));
+    forms.push_back(std::move(alternatives));
+  }
+  return forms;
+}
+
+// Every spelling of a phrase from one form of each word: the words as typed first, then in the
+// order of the forms (the first word varying slowest); at most kMaxFormKeys.
+std::vector<std::string> form_keys(const std::vector<std::vector<std::string>>& forms) {
+  std::vector<std::string> keys{""};
+  for (const std::vector<std::string>& word : forms) {
+    std::vector<std::string> longer;
+    for (const std::string& key : keys) {
+      for (const std::string& form : word) {
+        if (longer.size() < kMaxFormKeys) longer.push_back(key.empty() ? form : key + ' ' + form);
+      }
+    }
+    keys = std::move(longer);
+  }
+  return keys;
+}
+
 std::string scoped(const std::string& language, const std::string& key) {
   return language + '\x1f' + key;
 }
@@ -124,7 +167,8 @@ std::string base64url_encode(const std::string& in) {
   std::string out;
   std::size_t i = 0;
   while (i + 2 < in.size()) {
-    std::uint32_t v = (std::uint8_t(in[i]) << 16) | (std::uint8_t(in[i + 1]) << 8) | std::uint8_t(in[i + 2]);
+    std::uint32_t v =
+        (std::uint8_t(in[i]) << 16) | (std::uint8_t(in[i + 1]) << 8) | std::uint8_t(in[i + 2]);
     out += kBase64Url[v >> 18];
     out += kBase64Url[(v >> 12) & 63];
     out += kBase64Url[(v >> 6) & 63];
@@ -181,7 +225,8 @@ std::string query_hash(const SearchQuery& query, const std::string& normalized) 
 
 RankKey decode_cursor(const std::string& cursor, const std::string& expected_hash) {
   std::string raw;
-  if (cursor.size() > 1000 || !base64url_decode(cursor, &raw)) bad_cursor("not a cursor this server issued");
+  if (cursor.size() > 1000 || !base64url_decode(cursor, &raw))
+    bad_cursor("not a cursor this server issued");
   json parsed = json::parse(raw, nullptr, false);
   if (parsed.is_discarded() || !parsed.is_array() || parsed.size() != 6 || !parsed[0].is_string() ||
       !parsed[1].is_number_integer() || !parsed[2].is_number_integer() ||
@@ -201,7 +246,8 @@ RankKey decode_cursor(const std::string& cursor, const std::string& expected_has
 }
 
 std::string encode_cursor(const RankKey& key, const std::string& hash) {
-  return base64url_encode(json::array({hash, key.tier, key.distance, key.extra, key.gloss_norm, key.id}).dump());
+  return base64url_encode(
+      json::array({hash, key.tier, key.distance, key.extra, key.gloss_norm, key.id}).dump());
 }
 
 }  // namespace
@@ -215,12 +261,17 @@ SearchIndex SearchIndex::build(Database& db, std::int64_t generation) {
       "SELECT id, language, gloss, gloss_norm, notation, format, revision FROM signs "
       "WHERE deleted = 0 ORDER BY id");
   while (signs.step()) {
-    Sign sign{signs.column_int(0), signs.column_text(1), signs.column_text(2), signs.column_text(3),
-              signs.column_text(4), signs.column_text(5), signs.column_int(6), {}};
+    Sign sign{
+        signs.column_int(0),  signs.column_text(1), signs.column_text(2), signs.column_text(3),
+        signs.column_text(4), signs.column_text(5), signs.column_int(6),  {}};
     by_id[sign.id] = static_cast<std::uint32_t>(index.signs_.size());
     index.signs_.push_back(std::move(sign));
   }
   signs.reset();
+
+  Statement& languages = db.prepare("SELECT code, spoken FROM languages");
+  while (languages.step()) index.spoken_[languages.column_text(0)] = languages.column_text(1);
+  languages.reset();
 
   std::unordered_set<std::uint32_t> letter_signs;
   Statement& alphabet = db.prepare("SELECT language, letter, sign_id FROM alphabet");
@@ -249,23 +300,35 @@ SearchIndex SearchIndex::build(Database& db, std::int64_t generation) {
     }
   };
 
+  // A keyword or gloss is looked up under its written spelling (phrases_) and under every
+  // spelling of its base forms (phrase_stems_), each sign once per spelling.
+  auto add_phrase = [&](std::uint32_t sign, const std::string& text, bool is_keyword) {
+    int words = 0;
+    std::string key = phrase_key(text, &words);
+    if (key.empty() || words > kMaxPhraseWords) return;
+    const std::string& language = index.signs_[sign].language;
+    auto spoken = index.spoken_.find(language);
+    std::vector<std::string> keys =
+        form_keys(forms_of(split_words(key), spoken == index.spoken_.end() ? "" : spoken->second));
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      auto& list = (k == 0 ? index.phrases_ : index.phrase_stems_)[scoped(language, keys[k])];
+      bool present =
+          std::any_of(list.begin(), list.end(), [&](const Phrase& p) { return p.sign == sign; });
+      if (!present) list.push_back(Phrase{sign, text, is_keyword});
+    }
+  };
+
   Statement& keywords = db.prepare(
       "SELECT sk.sign_id, k.word FROM sign_keywords sk "
       "JOIN keywords k ON k.id = sk.keyword_id JOIN signs s ON s.id = sk.sign_id "
       "WHERE s.deleted = 0 ORDER BY sk.position, sk.sign_id");
-  int longest_phrase = 1;
   while (keywords.step()) {
     auto found = by_id.find(keywords.column_int(0));
     if (found == by_id.end()) continue;
     std::string word = keywords.column_text(1);
     index.signs_[found->second].keywords.push_back(word);
     add_term(word, found->second, true);
-    int words = 0;
-    std::string key = phrase_key(word, &words);
-    if (!key.empty() && words <= kMaxPhraseWords) {
-      index.phrases_[scoped(index.signs_[found->second].language, key)].push_back(found->second);
-      longest_phrase = std::max(longest_phrase, words);
-    }
+    add_phrase(found->second, word, true);
   }
   keywords.reset();
 
@@ -274,18 +337,14 @@ SearchIndex SearchIndex::build(Database& db, std::int64_t generation) {
   for (std::uint32_t s = 0; s < index.signs_.size(); ++s) {
     add_term(index.signs_[s].gloss, s, false);
     if (letter_signs.count(s)) continue;
-    int words = 0;
-    std::string key = phrase_key(index.signs_[s].gloss, &words);
-    if (!key.empty() && words <= kMaxPhraseWords) {
-      auto& list = index.phrases_[scoped(index.signs_[s].language, key)];
-      if (std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
-    }
+    add_phrase(s, index.signs_[s].gloss, false);
   }
 
   std::sort(index.terms_.begin(), index.terms_.end(),
             [](const Term& a, const Term& b) { return a.norm < b.norm; });
   for (std::uint32_t t = 0; t < index.terms_.size(); ++t) {
-    for (std::uint64_t gram : trigrams_of(index.terms_[t].code_points)) index.trigrams_[gram].push_back(t);
+    for (std::uint64_t gram : trigrams_of(index.terms_[t].code_points))
+      index.trigrams_[gram].push_back(t);
   }
   return index;
 }
@@ -298,17 +357,24 @@ SearchPage SearchIndex::search(const SearchQuery& query) const {
 
   struct Candidate {
     RankKey key;
-    const Term* term;  // nullptr for a listing
+    const std::string* text;  // the gloss or keyword that matched; nullptr for a listing
+    bool is_keyword;
     const char* type;
   };
   std::unordered_map<std::uint32_t, Candidate> best;  // per sign
-  auto consider = [&](std::uint32_t sign, int tier, int distance, int extra, const Term* term,
-                      const char* type) {
+  auto consider_match = [&](std::uint32_t sign, int tier, int distance, int extra,
+                            const std::string* text, bool is_keyword, const char* type) {
     const Sign& s = signs_[sign];
     if (!query.language.empty() && s.language != query.language) return;
     RankKey key{tier, distance, extra, s.gloss_norm, s.id};
     auto found = best.find(sign);
-    if (found == best.end() || key < found->second.key) best[sign] = Candidate{key, term, type};
+    if (found == best.end() || key < found->second.key)
+      best[sign] = Candidate{key, text, is_keyword, type};
+  };
+  auto consider = [&](std::uint32_t sign, int tier, int distance, int extra, const Term* term,
+                      const char* type) {
+    consider_match(sign, tier, distance, extra, term ? &term->text : nullptr,
+                   term && term->is_keyword, type);
   };
 
   if (normalized.empty()) {
@@ -318,13 +384,33 @@ SearchPage SearchIndex::search(const SearchQuery& query) const {
     // Exact and prefix: the sorted terms whose norm starts with the query form one range.
     auto first = std::lower_bound(terms_.begin(), terms_.end(), normalized,
                                   [](const Term& t, const std::string& q) { return t.norm < q; });
-    for (auto it = first; it != terms_.end() && it->norm.compare(0, normalized.size(), normalized) == 0; ++it) {
+    for (auto it = first;
+         it != terms_.end() && it->norm.compare(0, normalized.size(), normalized) == 0; ++it) {
       std::uint32_t sign = it->sign;
       int extra = static_cast<int>(it->code_points.size() - query_cps.size());
       if (it->is_inner_word) {
-        consider(sign, 2, 0, extra, &*it, "word_prefix");
+        consider(sign, 3, 0, extra, &*it, "word_prefix");
       } else {
-        consider(sign, extra == 0 ? 0 : 1, 0, extra, &*it, extra == 0 ? "exact" : "prefix");
+        consider(sign, extra == 0 ? 0 : 2, 0, extra, &*it, extra == 0 ? "exact" : "prefix");
+      }
+    }
+    // Other forms of the words, in each language the query may be in (word_forms.h).
+    int words = 0;
+    std::vector<std::string> query_words = split_words(phrase_key(normalized, &words));
+    if (!query_words.empty() && words <= kMaxPhraseWords) {
+      for (const auto& [language, spoken] : spoken_) {
+        if (!query.language.empty() && language != query.language) continue;
+        std::vector<std::string> keys = form_keys(forms_of(query_words, spoken));
+        for (std::size_t k = 0; k < keys.size(); ++k) {
+          for (const auto* table : {&phrases_, &phrase_stems_}) {
+            if (k == 0 && table == &phrases_) continue;  // the words as written: the exact tier
+            auto found = table->find(scoped(language, keys[k]));
+            if (found == table->end()) continue;
+            for (const Phrase& phrase : found->second) {
+              consider_match(phrase.sign, 1, 0, 0, &phrase.text, phrase.is_keyword, "stem");
+            }
+          }
+        }
       }
     }
     // Typos: candidates share enough trigrams (an insertion, deletion or substitution changes at
@@ -353,7 +439,7 @@ SearchPage SearchIndex::search(const SearchQuery& query) const {
         if (term.is_inner_word) continue;
         int distance = bounded_osa_distance(query_cps, term.code_points, bound);
         if (distance == 0 || distance > bound) continue;
-        consider(term.sign, 3, distance, 0, &term, "fuzzy");
+        consider(term.sign, 4, distance, 0, &term, "fuzzy");
       }
     }
   }
@@ -387,9 +473,9 @@ SearchPage SearchIndex::search(const SearchQuery& query) const {
     hit.keywords = s.keywords;
     hit.match_type = it->type;
     hit.distance = it->key.distance;
-    if (it->term) {
-      hit.match_field = it->term->is_keyword ? "keyword" : "gloss";
-      hit.match_text = it->term->text;
+    if (it->text) {
+      hit.match_field = it->is_keyword ? "keyword" : "gloss";
+      hit.match_text = *it->text;
     }
     page.hits.push_back(std::move(hit));
     if (static_cast<int>(page.hits.size()) == limit && std::next(it) != ranked.end()) {
@@ -397,6 +483,30 @@ SearchPage SearchIndex::search(const SearchQuery& query) const {
     }
   }
   return page;
+}
+
+const std::vector<SearchIndex::Phrase>* SearchIndex::find_phrase(
+    const std::string& language, const std::vector<std::vector<std::string>>& word_forms,
+    std::string* type, std::string* form) const {
+  std::vector<std::string> keys = form_keys(word_forms);
+  auto in = [&](const std::unordered_map<std::string, std::vector<Phrase>>& table,
+                const std::string& key) -> const std::vector<Phrase>* {
+    auto found = table.find(scoped(language, key));
+    return found == table.end() || found->second.empty() ? nullptr : &found->second;
+  };
+  auto answer = [&](const std::vector<Phrase>* phrases, const char* how, const std::string& key) {
+    *type = how;
+    *form = key;
+    return phrases;
+  };
+  if (const auto* exact = in(phrases_, keys.front())) return answer(exact, "exact", keys.front());
+  for (std::size_t k = 1; k < keys.size(); ++k) {
+    if (const auto* written = in(phrases_, keys[k])) return answer(written, "stem", keys[k]);
+  }
+  for (const std::string& key : keys) {
+    if (const auto* reduced = in(phrase_stems_, key)) return answer(reduced, "stem", key);
+  }
+  return nullptr;
 }
 
 LookupResult SearchIndex::lookup(const std::string& text, const std::string& language) const {
@@ -420,6 +530,15 @@ LookupResult SearchIndex::lookup(const std::string& text, const std::string& lan
   };
 
   std::vector<TextItem> items = scan_text(cps);
+  // Each word's forms (as typed, then its base forms), reduced once for every run it is part of.
+  auto spoken = spoken_.find(language);
+  std::vector<std::vector<std::string>> word_forms(items.size());
+  for (std::size_t w = 0; w < items.size(); ++w) {
+    if (items[w].kind != TextItem::Kind::Word) continue;
+    word_forms[w] = forms_of({lower_range(cps, items[w].begin, items[w].end)},
+                             spoken == spoken_.end() ? "" : spoken->second)
+                        .front();
+  }
   std::size_t i = 0;
   while (i < items.size()) {
     const TextItem& item = items[i];
@@ -441,23 +560,21 @@ LookupResult SearchIndex::lookup(const std::string& text, const std::string& lan
     }
     bool matched = false;
     for (std::size_t end = run_end; end > i && !matched; --end) {
-      std::string key;
-      for (std::size_t w = i; w < end; ++w) {
-        if (!key.empty()) key.push_back(' ');
-        key += lower_range(cps, items[w].begin, items[w].end);
-      }
-      auto found = phrases_.find(scoped(language, key));
-      if (found == phrases_.end() || found->second.empty()) continue;
-      const Sign& s = signs_[found->second.front()];
+      std::vector<std::vector<std::string>> run_forms(word_forms.begin() + i,
+                                                      word_forms.begin() + end);
       LookupToken token;
+      const std::vector<Phrase>* found =
+          find_phrase(language, run_forms, &token.match_type, &token.match_form);
+      if (found == nullptr) continue;
+      const Sign& s = signs_[found->front().sign];
       token.type = LookupToken::Type::Sign;
       token.text = span_text(items[i].begin, items[end - 1].end);
       token.offset = byte_at[items[i].begin];
       token.sign_id = s.id;
       token.gloss = s.gloss;
-      for (std::size_t k = 1; k < found->second.size(); ++k) {
-        token.alternatives.push_back(signs_[found->second[k]].id);
-      }
+      token.match_text = found->front().text;
+      for (std::size_t k = 1; k < found->size(); ++k)
+        token.alternatives.push_back(signs_[(*found)[k].sign].id);
       result.tokens.push_back(std::move(token));
       i = end;
       matched = true;
@@ -476,7 +593,8 @@ LookupResult SearchIndex::lookup(const std::string& text, const std::string& lan
         continue;
       }
       bool found_letter = false;
-      for (std::size_t length = std::min<std::size_t>(kMaxLetterCodePoints, item.end - c); length >= 1; --length) {
+      for (std::size_t length = std::min<std::size_t>(kMaxLetterCodePoints, item.end - c);
+           length >= 1; --length) {
         std::string lowered;
         for (std::size_t k = c; k < c + length; ++k) append_utf8(lowered, to_lower(cps[k]));
         auto found = letters_.find(scoped(language, lowered));

@@ -13,6 +13,7 @@
 #include "store/sign_json.h"
 #include "store/sign_validation.h"
 #include "store/utf8_text.h"
+#include "store/word_forms.h"
 
 namespace sw::store {
 namespace {
@@ -485,6 +486,12 @@ std::vector<RevisionRecord> Store::history(std::int64_t id) {
 
 // ------------------------------------------------------------------------------------------------
 // Search and lookup
+
+void Store::prepare_search() {
+  for (const Language& language : languages()) WordForms::shared().covers(language.spoken);
+  Lease db = lease();
+  current_index(*db);
+}
 
 SearchPage Store::search(const SearchQuery& query) {
   Lease db = lease();

@@ -98,6 +98,9 @@ class Store {
   std::int64_t count_live_signs();
 
   // --- search and lookup (search_index.h has the ranking)
+  // Loads the word-form dictionaries of every language and builds the index, so that the first
+  // search does not wait for them (uk_UA takes about a second): the server calls it at start.
+  void prepare_search();
   SearchPage search(const SearchQuery& query);
   LookupResult lookup(const std::string& text, const std::string& language);
 

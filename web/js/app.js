@@ -11,6 +11,7 @@ import { OrbitCamera, attachCameraControls } from './camera.js';
 import { Dictionary, normalizeSign } from './dictionary.js';
 import { NotationEditor } from './editor.js';
 import { download, recordWebm, safeFileStem, webmSupported } from './export.js';
+import { installNotationExport } from './notation_export.js';
 import { PhrasePane, phraseItems } from './phrase.js';
 import { transformPoint } from './mat4.js';
 import { Playback } from './playback.js';
@@ -385,6 +386,11 @@ $('sign-edit').addEventListener('click', () => {
   if (!s) return;
   location.hash = '#/editor';
   editor.load({ text: s.notation, format: s.format, gloss: s.gloss, keywords: s.keywords, id: s.id, revision: s.revision });
+});
+
+installNotationExport({
+  select: $('sign-export-format'), button: $('sign-export'), status: $('sign-export-status'),
+  currentSign: () => dictionary.current,
 });
 
 function describeFailure(result) {
