@@ -208,5 +208,24 @@ TEST(HamNoSys4Grammar, GSiGMLPostureChangesAreCumulative) {
   EXPECT_EQ(c.to_orientation->palm, (Direction{0, -1, 0}));
 }
 
+TEST(HamNoSys4Grammar, SpecialFingerTakesTheIndexsPlace) {
+  // G-SiGML specialfingers / HamNoSys digits after a one-finger base: the middle finger extended
+  // in the index's place, the index closed (not both straight).
+  const SignSpec g = clean_sigml(
+      std::string(kGesturalHead) +
+      "<handconfig handshape=\"finger2\" specialfingers=\"3\" extfidir=\"u\" palmor=\"l\"/>" +
+      kGesturalTail);
+  const SignSpec h = clean_hamnosys("hamfinger2 hammiddlefinger hamextfingeru hampalml");
+  for (const SignSpec* s : {&g, &h}) {
+    const FingerConfig& index = s->dominant.shape.fingers[static_cast<int>(Finger::Index)];
+    const FingerConfig& middle = s->dominant.shape.fingers[static_cast<int>(Finger::Middle)];
+    EXPECT_EQ(index.id, kFingerPressedToStraight);
+    EXPECT_LE(index.t, 0.0f) << "the index must close";
+    EXPECT_EQ(middle.id, kFingerPressedToStraight);
+    EXPECT_GE(middle.t, 1.0f) << "the middle finger must be straight";
+  }
+  expect_round_trip(h);
+}
+
 }  // namespace
 }  // namespace sw::notation
