@@ -258,8 +258,14 @@ void movement(Out* out, const Movement& m, const HandSpec& initial) {
   if (!change) out->line(base + "/>");
   if (m.to_shape || m.to_orientation || m.kind == MovementKind::Replace) {
     out->line("<changeposture/>");
+    // Posture changes are cumulative (gsigml_reader.cpp): a changed orientation is written in
+    // full, since a direction left out reads as the last change's, not the start's.
+    Orientation unwritten;
+    unwritten.extended_finger = Direction{};
+    unwritten.palm = Direction{};
     const Orientation o = m.to_orientation ? *m.to_orientation : initial.orientation;
-    out->line(handconfig(m.to_shape ? &*m.to_shape : nullptr, o, initial.orientation));
+    out->line(handconfig(m.to_shape ? &*m.to_shape : nullptr, o,
+                         m.to_orientation ? unwritten : initial.orientation));
   }
   if (m.to_location) location(out, *m.to_location, nullptr);
   --out->depth;
@@ -351,6 +357,7 @@ std::string print_hamgestural_sign(const SignSpec& sign, int indent) {
     case Symmetry::ParallelUD: manual += attr("both_hands", "true") + attr("ud_symm", "true"); break;
     case Symmetry::ParallelIO: manual += attr("both_hands", "true") + attr("oi_symm", "true"); break;
   }
+  if (sign.one_hand_is_nondominant && !sign.nondominant) manual += attr("nondominant", "true");
   out.line(manual + ">");
   ++out.depth;
   const Orientation default_orientation;

@@ -3,7 +3,8 @@
 // hamnosys_symbols.h; handshapes go through handshape.h.
 //
 // Grammar read (HamNoSys 4, as real corpora write it):
-//   sign     := [symmetry [hamalternatingmotion]] config [location] action*
+//   sign     := part {hamplus part}                                 (sequential parts)
+//   part     := [hamnondominant] [symmetry [hamalternatingmotion]] config [location] action*
 //   config   := hand | hamparbegin hand hamplus hand hamparend      (dominant, non-dominant)
 //   hand     := handshape [extfidir {[hambetween] extfidir}] [palm {[hambetween] palm}]
 //   location := [part] [lr] level [lr] [contact] [bracket] | place [contact] [bracket]
@@ -14,6 +15,9 @@
 //             | hamseqbegin action* hamseqend | hamfusionbegin action* hamfusionend
 //             | hamparbegin action* [hamplus action*] hamparend | repetition
 //             | {alternative | alternative}  (the first alternative is taken)
+//   A later part is read as a change (hamreplace) to its configuration and place, then its
+//   actions; its symmetry is kept only where it is the sign's (SignSpec has one per sign).
+//   hamnondominant before a one-handed configuration: the non-dominant hand signs.
 // Unknown symbols and unbalanced brackets give a diagnostic with position and symbol; the reader
 // skips them and goes on (it never stops early or crashes).
 //

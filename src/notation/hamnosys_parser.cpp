@@ -55,19 +55,16 @@ bool is_movement_modifier(char32_t c) {
          c == hamalternatingmotion;
 }
 
-
-
-
 bool operator!=(const Orientation& a, const Orientation& b) {
   return a.extended_finger != b.extended_finger || a.palm != b.palm || a.seed_palm != b.seed_palm;
 }
 
 // One location element: what it says about a hand.
 struct LocationPart {
-  bool has_level = false;     // a body level or neutral space
-  bool has_place = false;     // a place on a hand / arm
-  Location location;          // level/side or place (kind set accordingly)
-  bool part_only = false;     // only a hand part (digit/part symbols) with no body level
+  bool has_level = false;  // a body level or neutral space
+  bool has_place = false;  // a place on a hand / arm
+  Location location;       // level/side or place (kind set accordingly)
+  bool part_only = false;  // only a hand part (digit/part symbols) with no body level
   // The part of THIS hand that makes the contact, from a bracket after the place
   // (read_contact_bracket): "hamearlobe hamseqbegin hamtouch hamthumb hamfingernail hamseqend".
   std::optional<HandPlace> bracket_part;
@@ -85,29 +82,21 @@ class Reader {
     if (too_deep_) return false;
     std::size_t i = 0;
     const std::size_t end = s_.size();
+    bool nondominant_first = false;
     // Prefix: two-handed operators and a pending alternation.
     while (i < end) {
       const char32_t c = s_[i].code;
       if (c == hamsymmlr || c == hamsymmpar) {
-        const bool mirror = c == hamsymmlr;
-        sign->symmetry = mirror ? Symmetry::MirrorLR : Symmetry::Parallel;
-        // HamNoSys 4 refines a symmetry operator with a following hamfingerstraightmod (also
-        // mirror/parallel up-down) or hamlargemod (also in-out), as SiGML's ud_symm/oi_symm.
-        if (i + 1 < end && s_[i + 1].code == hamfingerstraightmod) {
-          sign->symmetry = mirror ? Symmetry::MirrorLRUD : Symmetry::ParallelUD;
-          ++i;
-        } else if (i + 1 < end && s_[i + 1].code == hamlargemod) {
-          sign->symmetry = mirror ? Symmetry::MirrorLRIO : Symmetry::ParallelIO;
-          ++i;
-        }
-        while (i + 1 < end && (s_[i + 1].code == hamfingerstraightmod || s_[i + 1].code == hamlargemod)) {
-          warning(i + 1, "a second symmetry refinement is read and not kept");
-          ++i;
-        }
+        i = read_symmetry(i, end, &sign->symmetry);
+        continue;
       } else if (c == hamalternatingmotion) {
         alternate_all_ = true;
-      } else if (c == hamnonipsi || c == hamnondominant || c == hammime || c == hamversion40) {
-        // Read and not kept (hamnondominant: see "Does not" in hamnosys.h).
+      } else if (c == hamnondominant) {
+        // HamNoSys 4: before a one-handed configuration, the non-dominant hand signs (kept when
+        // no hamplus pair of two hands follows, below).
+        nondominant_first = true;
+      } else if (c == hamnonipsi || c == hammime || c == hamversion40) {
+        // Read and not kept.
       } else if (skip_ignorable(&i)) {
         continue;
       } else {
@@ -121,14 +110,18 @@ class Reader {
       const std::size_t close = match_[i];
       std::size_t plus = find_plus(i + 1, close);
       std::size_t j = read_hand(i + 1, plus, &sign->dominant, nullptr);
-      if (j < plus) error(j, "expected the dominant hand's orientation or hamplus, found '" + s_[j].text + "'");
+      if (j < plus)
+        error(j, "expected the dominant hand's orientation or hamplus, found '" + s_[j].text + "'");
       if (plus == close) {
-        error(i, "expected hamplus between the two hands' configurations in hamparbegin...hamparend");
+        error(i,
+              "expected hamplus between the two hands' configurations in hamparbegin...hamparend");
       } else {
         // What the non-dominant hand does not say is as the dominant hand has it.
         HandSpec nd = sign->dominant;
         j = read_hand(plus + 1, close, &nd, &sign->dominant.orientation);
-        if (j < close) error(j, "expected the non-dominant hand's configuration or hamparend, found '" + s_[j].text + "'");
+        if (j < close)
+          error(j, "expected the non-dominant hand's configuration or hamparend, found '" +
+                       s_[j].text + "'");
         sign->nondominant = nd;
       }
       i = close < end ? close + 1 : end;
@@ -137,13 +130,19 @@ class Reader {
       i = read_orientation_pair(i, end, sign);
     } else {
       if (i < end) {
-        error(i, "expected a handshape (hamfist, hamflathand, hamfinger2, ...) or "
-                 "hamparbegin with two hands' configurations, found '" + s_[i].text + "'");
+        error(i,
+              "expected a handshape (hamfist, hamflathand, hamfinger2, ...) or "
+              "hamparbegin with two hands' configurations, found '" +
+                  s_[i].text + "'");
       } else {
-        error_at_end("expected a handshape (hamfist, hamflathand, hamfinger2, ...), found the end of the sign");
+        error_at_end(
+            "expected a handshape (hamfist, hamflathand, hamfinger2, ...), found the end of the "
+            "sign");
       }
       return false;
     }
+    sign->one_hand_is_nondominant =
+        nondominant_first && !sign->nondominant && sign->symmetry == Symmetry::None;
     // Initial location.
     if (i < end && starts_location(i)) i = read_initial_location(i, end, sign);
     initial_dominant_ = sign->dominant;
@@ -168,7 +167,8 @@ class Reader {
     // both hands make the movements, the non-dominant hand mirrored, and the contact is between
     // them (the real-sign corpus, TO-MIX3: both hands circle against each other; read as a
     // place, one hand circled on a still one: 157 of its signs).
-    if (sign->dominant.location.kind == Location::Kind::OtherHand && sign->symmetry == Symmetry::None)
+    if (sign->dominant.location.kind == Location::Kind::OtherHand &&
+        sign->symmetry == Symmetry::None)
       sign->nondominant_is_place = true;
     return true;
   }
@@ -195,11 +195,16 @@ class Reader {
   // ---- brackets: match_[i] = index of the closer of the opener at i (s_.size() if unclosed)
   static char32_t closer_of(char32_t c) {
     switch (c) {
-      case hamseqbegin: return hamseqend;
-      case hamparbegin: return hamparend;
-      case hamfusionbegin: return hamfusionend;
-      case hamaltbegin: return hamaltend;
-      default: return 0;
+      case hamseqbegin:
+        return hamseqend;
+      case hamparbegin:
+        return hamparend;
+      case hamfusionbegin:
+        return hamfusionend;
+      case hamaltbegin:
+        return hamaltend;
+      default:
+        return 0;
     }
   }
   static bool is_closer(char32_t c) {
@@ -223,17 +228,23 @@ class Reader {
         if (!open.empty() && closer_of(s_[open.back()].code) == c) {
           match_[open.back()] = i;
           open.pop_back();
-        } else if (!open.empty() && open.size() >= 2 && closer_of(s_[open[open.size() - 2]].code) == c) {
+        } else if (!open.empty() && open.size() >= 2 &&
+                   closer_of(s_[open[open.size() - 2]].code) == c) {
           // The inner group was never closed: close it here as well.
-          error(open.back(), "unbalanced brackets: '" + s_[open.back()].text + "' is not closed (expected '" +
-                                 ham_symbol_name(closer_of(s_[open.back()].code)) + "' before '" + s_[i].text + "')");
+          error(open.back(), "unbalanced brackets: '" + s_[open.back()].text +
+                                 "' is not closed (expected '" +
+                                 ham_symbol_name(closer_of(s_[open.back()].code)) + "' before '" +
+                                 s_[i].text + "')");
           match_[open.back()] = i;
           open.pop_back();
           match_[open.back()] = i;
           open.pop_back();
         } else {
-          error(i, "unbalanced brackets: '" + s_[i].text + "' closes nothing that is open" +
-                       (open.empty() ? "" : std::string(" (expected '") + ham_symbol_name(closer_of(s_[open.back()].code)) + "')"));
+          error(i,
+                "unbalanced brackets: '" + s_[i].text + "' closes nothing that is open" +
+                    (open.empty() ? ""
+                                  : std::string(" (expected '") +
+                                        ham_symbol_name(closer_of(s_[open.back()].code)) + "')"));
           skip_[i] = true;
         }
       }
@@ -272,9 +283,9 @@ class Reader {
   // Marks inside a hand configuration that SignSpec does not keep (hamorirelative: orientation
   // relative to the other hand; hametc; hamnondominant; hamincreasing/decreasing in a change).
   std::size_t skip_marks(std::size_t i, std::size_t end) const {
-    while (i < end && (s_[i].code == hamorirelative || s_[i].code == hametc ||
-                       s_[i].code == hamnondominant || s_[i].code == hamincreasing ||
-                       s_[i].code == hamdecreasing)) {
+    while (i < end &&
+           (s_[i].code == hamorirelative || s_[i].code == hametc || s_[i].code == hamnondominant ||
+            s_[i].code == hamincreasing || s_[i].code == hamdecreasing)) {
       ++i;
     }
     return i;
@@ -284,12 +295,13 @@ class Reader {
   // thumb touches) unless they end in a contact, a body or hand place: then they are a location
   // ("hamfist hamindexfinger hamtouch": the index touches).
   bool finger_run_is_shape(std::size_t i, std::size_t end) const {
-    if (s_[i].code >= hamfingertip && s_[i].code <= hamfingerside) return false;  // a part, no digit
+    if (s_[i].code >= hamfingertip && s_[i].code <= hamfingerside)
+      return false;  // a part, no digit
     while (i < end && in_group(s_[i].code, HamGroup::LocationFinger)) ++i;
     if (i >= end) return true;
     const char32_t c = s_[i].code;
-    return !(in_group(c, HamGroup::Contact) || is_body_level(c) || c == hamlrat || c == hamlrbeside ||
-             in_group(c, HamGroup::LocationArmHand) || c == hamneutralspace);
+    return !(in_group(c, HamGroup::Contact) || is_body_level(c) || c == hamlrat ||
+             c == hamlrbeside || in_group(c, HamGroup::LocationArmHand) || c == hamneutralspace);
   }
 
   std::size_t read_hand(std::size_t i, std::size_t end, HandSpec* hand, Orientation* base) {
@@ -299,13 +311,15 @@ class Reader {
       std::vector<char32_t> words;
       while (i < end && is_shape_word(s_[i].code)) {
         const char32_t c = s_[i].code;
-        if (c == hambetween && i + 1 < end && s_[i + 1].code >= hamthumb && s_[i + 1].code <= hampinky) {
+        if (c == hambetween && i + 1 < end && s_[i + 1].code >= hamthumb &&
+            s_[i + 1].code <= hampinky) {
           i += 2;  // "between two fingers": the first is kept
           continue;
         }
         if (c == hambetween && !(i + 1 < end && is_shape_base(s_[i + 1].code))) break;
         const bool run_start = !(i > start && in_group(s_[i - 1].code, HamGroup::LocationFinger));
-        if (in_group(c, HamGroup::LocationFinger) && run_start && !finger_run_is_shape(i, end)) break;
+        if (in_group(c, HamGroup::LocationFinger) && run_start && !finger_run_is_shape(i, end))
+          break;
         words.push_back(c);
         ++i;
       }
@@ -385,8 +399,8 @@ class Reader {
   }
 
   // [digits] [part] [lr] level [lr] [contact]; returns the index after it.
-  std::size_t read_location_part(std::size_t i, std::size_t end, LocationPart* out, Contact* contact,
-                                 bool* has_contact) {
+  std::size_t read_location_part(std::size_t i, std::size_t end, LocationPart* out,
+                                 Contact* contact, bool* has_contact) {
     Location& loc = out->location;
     int finger = -1;
     bool lr_before = false, lr_beside = false;
@@ -431,14 +445,16 @@ class Reader {
         // A contact written before the place (hambrushing hamshoulders hamtouch) qualifies the
         // way there; the place and its own contact follow.
         const bool nothing_yet = !out->has_level && !out->has_place && !lr_before;
-        if (nothing_yet && i < end && is_location_start(s_[i].code) && !in_group(s_[i].code, HamGroup::Contact)) {
+        if (nothing_yet && i < end && is_location_start(s_[i].code) &&
+            !in_group(s_[i].code, HamGroup::Contact)) {
           continue;
         }
         break;
       } else if (c == hamcoreftag || c == hamcorefref) {
         // coreference marks: read and skipped
       } else if (c == hambetween && (out->has_level || out->has_place) && i + 1 < end &&
-                 is_location_start(s_[i + 1].code) && !in_group(s_[i + 1].code, HamGroup::Contact)) {
+                 is_location_start(s_[i + 1].code) &&
+                 !in_group(s_[i + 1].code, HamGroup::Contact)) {
         // "Between two places": the first one is kept, the second read and dropped.
         LocationPart other;
         Contact other_contact = Contact::None;
@@ -450,10 +466,13 @@ class Reader {
           break;
         }
         continue;
-      } else if (c == hamseqbegin && (out->has_level || out->has_place) && is_contact_bracket(i, end)) {
+      } else if (c == hamseqbegin && (out->has_level || out->has_place) &&
+                 is_contact_bracket(i, end)) {
         i = read_contact_bracket(i, out, contact, has_contact);
         break;
-      } else if ((c == hamseqbegin && i + 1 < end && is_location_start(s_[i + 1].code)) || c == hamseqend) {
+      } else if ((c == hamseqbegin && i + 1 < end && is_location_start(s_[i + 1].code) &&
+                  !holds_movement(i)) ||
+                 c == hamseqend) {
         // A sequence of places inside a location (contact along the way): read through.
         in_sequence = c == hamseqbegin;
       } else {
@@ -463,7 +482,8 @@ class Reader {
     }
     loc.finger = static_cast<std::int8_t>(finger);
     if (out->has_level) {
-      loc.kind = loc.level == BodyLevel::NeutralSpace ? Location::Kind::NeutralSpace : Location::Kind::Body;
+      loc.kind = loc.level == BodyLevel::NeutralSpace ? Location::Kind::NeutralSpace
+                                                      : Location::Kind::Body;
     } else if (out->has_place) {
       loc.kind = Location::Kind::OtherHand;
     } else if (lr_before) {  // a side with no level: at that side of neutral space
@@ -471,6 +491,16 @@ class Reader {
     }
     out->part_only = out->has_place && !out->has_level;
     return i;
+  }
+
+  // Whether the group opened at i holds a movement: then it is a sequence of actions (HamNoSys
+  // 4: "hamlowerarm [hamtouch hammovedo hambetween hammoveor]", touching the forearm along a
+  // path, the DGS corpus's CAST1), not a sequence of places inside a location.
+  bool holds_movement(std::size_t i) const {
+    const std::size_t close = std::min(match_[i], s_.size());
+    for (std::size_t k = i + 1; k < close; ++k)
+      if (is_movement(s_[k].code) || s_[k].code == hamreplace) return true;
+    return false;
   }
 
   // HamNoSys 4 writes the part of the hand that makes a contact in brackets after the place:
@@ -498,7 +528,8 @@ class Reader {
   // first digit names the finger (a second one, "hamthumb hamindexfinger", is read and dropped:
   // Location has one contact finger); a second part after a finger part is the side of it
   // (hampalm: palmar, hamhandback: dorsal, SiGML side="palmar"/"dorsal") and is not kept.
-  std::size_t read_contact_bracket(std::size_t i, LocationPart* out, Contact* contact, bool* has_contact) {
+  std::size_t read_contact_bracket(std::size_t i, LocationPart* out, Contact* contact,
+                                   bool* has_contact) {
     const std::size_t close = match_[i];
     *contact = contact_of(s_[i + 1].code);
     *has_contact = true;
@@ -596,12 +627,14 @@ class Reader {
       } else {
         *dominant = a.location;
       }
-      if (a.bracket_part) {  // the bracket names this hand's part: it wins over a part before the place
+      if (a.bracket_part) {  // the bracket names this hand's part: it wins over a part before the
+                             // place
         dominant->contact_part = a.bracket_part;
         dominant->contact_finger = a.bracket_finger;
       }
     }
-    dominant->contact = has_contact ? contact : (a.has_level || a.has_place ? Contact::None : dominant->contact);
+    dominant->contact =
+        has_contact ? contact : (a.has_level || a.has_place ? Contact::None : dominant->contact);
     return i;
   }
 
@@ -671,8 +704,9 @@ class Reader {
   std::size_t read_constellation_place(std::size_t i, std::size_t end, Location* nd, bool* nd_set) {
     if (i >= end) return i;
     const char32_t c = s_[i].code;
-    const bool body = is_body_level(c) || c == hamneutralspace ||
-                      ((c == hamlrat || c == hamlrbeside) && i + 1 < end && is_body_level(s_[i + 1].code));
+    const bool body =
+        is_body_level(c) || c == hamneutralspace ||
+        ((c == hamlrat || c == hamlrbeside) && i + 1 < end && is_body_level(s_[i + 1].code));
     if (!body) return i;
     LocationPart where;
     Contact contact = Contact::None;
@@ -692,7 +726,8 @@ class Reader {
   static HandSpec nondominant_copy(const SignSpec& sign) {
     HandSpec nd = sign.dominant;
     const Symmetry m = sign.symmetry;
-    const bool x = m == Symmetry::MirrorLR || m == Symmetry::MirrorLRUD || m == Symmetry::MirrorLRIO;
+    const bool x =
+        m == Symmetry::MirrorLR || m == Symmetry::MirrorLRUD || m == Symmetry::MirrorLRIO;
     const bool y = m == Symmetry::MirrorLRUD || m == Symmetry::ParallelUD;
     const bool z = m == Symmetry::MirrorLRIO || m == Symmetry::ParallelIO;
     for (Direction* d : {&nd.orientation.extended_finger, &nd.orientation.palm}) {
@@ -701,6 +736,100 @@ class Reader {
       if (z) d->z = static_cast<std::int8_t>(-d->z);
     }
     return nd;
+  }
+
+  // A symmetry operator, hamsymmlr or hamsymmpar. HamNoSys 4 refines it with a following
+  // hamfingerstraightmod (also mirror/parallel up-down) or hamlargemod (also in-out), as SiGML's
+  // ud_symm/oi_symm. Returns the index after it.
+  std::size_t read_symmetry(std::size_t i, std::size_t end, Symmetry* out) {
+    const bool mirror = s_[i].code == hamsymmlr;
+    *out = mirror ? Symmetry::MirrorLR : Symmetry::Parallel;
+    ++i;
+    if (i < end && s_[i].code == hamfingerstraightmod) {
+      *out = mirror ? Symmetry::MirrorLRUD : Symmetry::ParallelUD;
+      ++i;
+    } else if (i < end && s_[i].code == hamlargemod) {
+      *out = mirror ? Symmetry::MirrorLRIO : Symmetry::ParallelIO;
+      ++i;
+    }
+    while (i < end && (s_[i].code == hamfingerstraightmod || s_[i].code == hamlargemod)) {
+      warning(i, "a second symmetry refinement is read and not kept");
+      ++i;
+    }
+    return i;
+  }
+
+  // Whether a sequential part starts at i (after a hamplus outside any hand pair): a symmetry
+  // operator, a handshape or a two hands' configuration.
+  bool starts_part(std::size_t i, std::size_t end) const {
+    if (i >= end) return false;
+    const char32_t c = s_[i].code;
+    if (c == hamsymmlr || c == hamsymmpar || is_shape_base(c)) return true;
+    return c == hamparbegin && i + 1 < end && is_shape_base(s_[i + 1].code);
+  }
+
+  // HamNoSys 4 sequential parts: sign := part {hamplus part}, part := [symmetry
+  // [hamalternatingmotion]] config [location] action* (compounds; the DGS corpus's END4,
+  // KARLSRUHE2). A later part is a change to its configuration and place (hamreplace), then its
+  // actions, read on by the caller. A part's symmetry that differs from the sign's is read and
+  // reported: SignSpec has one symmetry per sign.
+  std::size_t read_part(std::size_t i, std::size_t end, SignSpec* sign,
+                        std::vector<MovementStep>* steps) {
+    while (i < end) {
+      const char32_t c = s_[i].code;
+      if (c == hamsymmlr || c == hamsymmpar) {
+        Symmetry part = Symmetry::None;
+        const std::size_t at = i;
+        i = read_symmetry(i, end, &part);
+        if (part != sign->symmetry)
+          warning(at,
+                  "a sequential part's own symmetry differs from the sign's: read and not kept");
+      } else if (c == hamalternatingmotion || c == hamnondominant || c == hamnonipsi) {
+        ++i;
+      } else {
+        break;
+      }
+    }
+    i = read_replace(i, end, sign, steps);
+    return read_part_orientation_pair(i, end, steps);
+  }
+
+  // One handshape for both hands and then the two hands' orientations (as read_orientation_pair
+  // at the sign's start), in a later part: the pair is the change's orientations.
+  std::size_t read_part_orientation_pair(std::size_t i, std::size_t end,
+                                         std::vector<MovementStep>* steps) {
+    if (!(i < end && s_[i].code == hamparbegin && match_[i] < end) || steps->empty() ||
+        steps->back().dominant.empty())
+      return i;
+    const std::size_t close = match_[i];
+    const std::size_t plus = find_plus(i + 1, close);
+    auto is_orientation = [&](std::size_t k) {
+      return k < close && (in_group(s_[k].code, HamGroup::ExtendedFinger) ||
+                           in_group(s_[k].code, HamGroup::Palm));
+    };
+    if (plus >= close || !is_orientation(i + 1) || !is_orientation(plus + 1)) return i;
+    MovementStep& step = steps->back();
+    Movement& dom = step.dominant.back();
+    Orientation o = dom.to_orientation ? *dom.to_orientation : initial_dominant_.orientation;
+    std::size_t j = skip_marks(read_orientation(i + 1, plus, &o), plus);
+    if (j < plus)
+      error(j, "expected the dominant hand's orientation or hamplus, found '" + s_[j].text + "'");
+    dom.to_orientation = o;
+    Movement nd;
+    nd.kind = MovementKind::Replace;
+    nd.to_shape = dom.to_shape;
+    Orientation ond = initial_nondominant_.orientation;
+    j = skip_marks(read_orientation(plus + 1, close, &ond), close);
+    if (j < close)
+      error(j, "expected the non-dominant hand's orientation or hamparend, found '" + s_[j].text +
+                   "'");
+    nd.to_orientation = ond;
+    step.nondominant.assign(1, nd);
+    step.nondominant_stays = false;
+    i = close + 1;
+    bool fresh = true;
+    if (i < end && starts_location(i)) i = read_target(i, end, steps, &fresh);
+    return i;
   }
 
   // ---- actions
@@ -717,12 +846,14 @@ class Reader {
     return &steps->back().dominant.back();
   }
 
-  void read_actions(std::size_t i, std::size_t end, SignSpec* sign, std::vector<MovementStep>* steps) {
+  void read_actions(std::size_t i, std::size_t end, SignSpec* sign,
+                    std::vector<MovementStep>* steps) {
     bool last_is_fresh = false;  // the last movement was read in this group, just before
     while (i < end) {
       if (skip_ignorable(&i)) continue;
       const char32_t c = s_[i].code;
-      if (is_movement(c) || ((in_group(c, HamGroup::Arc) || in_group(c, HamGroup::WavyZigzag)) && !last_is_fresh)) {
+      if (is_movement(c) ||
+          ((in_group(c, HamGroup::Arc) || in_group(c, HamGroup::WavyZigzag)) && !last_is_fresh)) {
         MovementStep step;
         step.dominant.push_back(movement_of(i));
         ++i;
@@ -751,7 +882,7 @@ class Reader {
         }
         ++i;
       } else if (in_group(c, HamGroup::Repetition) && c != hamalternatingmotion) {
-        const RepeatKind kind = c == hamrepeatfromstart           ? RepeatKind::FromStart
+        const RepeatKind kind = c == hamrepeatfromstart          ? RepeatKind::FromStart
                                 : c == hamrepeatfromstartseveral ? RepeatKind::FromStartSeveral
                                 : c == hamrepeatcontinue         ? RepeatKind::Continuing
                                 : c == hamrepeatcontinueseveral  ? RepeatKind::ContinuingSeveral
@@ -791,7 +922,8 @@ class Reader {
           step.nondominant.insert(step.nondominant.end(), s.dominant.begin(), s.dominant.end());
         }
         // "hamplus hamnomotion": the other hand stays, it does not follow the symmetry.
-        if (plus < close && b.empty() && holds_nomotion(plus + 1, close)) step.nondominant_stays = true;
+        if (plus < close && b.empty() && holds_nomotion(plus + 1, close))
+          step.nondominant_stays = true;
         if (!step.nondominant.empty()) step.nondominant_stays = false;
         if (!step.dominant.empty() || !step.nondominant.empty()) steps->push_back(std::move(step));
         i = close < end ? close + 1 : end;
@@ -809,17 +941,26 @@ class Reader {
         last_is_fresh = false;
       } else if (starts_location(i)) {
         i = read_target(i, end, steps, &last_is_fresh);
+      } else if (c == hamplus && starts_part(i + 1, end)) {
+        i = read_part(i + 1, end, sign, steps);
+        last_is_fresh = true;
       } else if (c == hamplus) {
-        warning(i, "hamplus outside hamparbegin...hamparend: what follows is read as a change of the hand");
+        warning(i,
+                "hamplus outside hamparbegin...hamparend: what follows is read as a change of the "
+                "hand");
         ++i;
         last_is_fresh = false;
-      } else if (is_shape_base(c) || in_group(c, HamGroup::ExtendedFinger) || in_group(c, HamGroup::Palm)) {
-        warning(i, "a hand configuration after the start is read as a change (hamreplace) of the hand");
+      } else if (is_shape_base(c) || in_group(c, HamGroup::ExtendedFinger) ||
+                 in_group(c, HamGroup::Palm)) {
+        warning(
+            i, "a hand configuration after the start is read as a change (hamreplace) of the hand");
         i = read_replace(i, end, sign, steps);
         last_is_fresh = true;
       } else {
-        error(i, "expected a movement, hamreplace, a location, a repetition or a group "
-                 "(hamseqbegin, hamparbegin, hamfusionbegin), found '" + s_[i].text + "'");
+        error(i,
+              "expected a movement, hamreplace, a location, a repetition or a group "
+              "(hamseqbegin, hamparbegin, hamfusionbegin), found '" +
+                  s_[i].text + "'");
         ++i;
       }
     }
@@ -873,11 +1014,11 @@ class Reader {
     } else if (c == hamlargemod) {
       m->size = Size::Large;
     } else if (c == hamfast || c == hamslow || c == hamtense || c == hamrest || c == hamhalt) {
-      m->manner = c == hamfast   ? Manner::Fast
-                  : c == hamslow ? Manner::Slow
+      m->manner = c == hamfast    ? Manner::Fast
+                  : c == hamslow  ? Manner::Slow
                   : c == hamtense ? Manner::Tense
-                  : c == hamrest ? Manner::Rest
-                                 : Manner::Halt;
+                  : c == hamrest  ? Manner::Rest
+                                  : Manner::Halt;
     } else if (c == hamalternatingmotion) {
       m->alternating = true;
     }
@@ -885,7 +1026,8 @@ class Reader {
   }
 
   // A location in action position: the target of the movement just read, else a Target move.
-  std::size_t read_target(std::size_t i, std::size_t end, std::vector<MovementStep>* steps, bool* fresh) {
+  std::size_t read_target(std::size_t i, std::size_t end, std::vector<MovementStep>* steps,
+                          bool* fresh) {
     Movement* m = *fresh ? last_of(steps) : nullptr;
     Location loc = initial_dominant_.location;
     loc.contact = Contact::None;
@@ -910,7 +1052,8 @@ class Reader {
   }
 
   // hamreplace (config | hand) [location]: a change of handshape/orientation (and place).
-  std::size_t read_replace(std::size_t i, std::size_t end, SignSpec* sign, std::vector<MovementStep>* steps) {
+  std::size_t read_replace(std::size_t i, std::size_t end, SignSpec* sign,
+                           std::vector<MovementStep>* steps) {
     (void)sign;
     Movement dom;
     dom.kind = MovementKind::Replace;
@@ -946,7 +1089,8 @@ class Reader {
       }
       i = close < end ? close + 1 : end;
     } else {
-      const std::size_t j = fill(i, end, reading_nondominant_ ? initial_nondominant_ : initial_dominant_, &dom);
+      const std::size_t j =
+          fill(i, end, reading_nondominant_ ? initial_nondominant_ : initial_dominant_, &dom);
       if (j == i && !(i < end && starts_location(i))) {
         if (i < end) {
           error(i, "expected a hand configuration after hamreplace, found '" + s_[i].text + "'");
@@ -974,8 +1118,8 @@ class Reader {
   // others are variants of the same sign). An alternative left open runs to the end.
   static std::vector<HamSymbolRef> first_alternatives(const std::vector<HamSymbolRef>& in) {
     std::vector<HamSymbolRef> out;
-    int depth = 0;          // nesting of hamaltbegin
-    int skipping_at = -1;   // depth at which we skip (after hammetaalt)
+    int depth = 0;         // nesting of hamaltbegin
+    int skipping_at = -1;  // depth at which we skip (after hammetaalt)
     for (const HamSymbolRef& r : in) {
       if (r.code == hamaltbegin) {
         ++depth;
@@ -1013,8 +1157,8 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' |
 
 }  // namespace
 
-std::vector<HamSymbolRef> tokenize_hamnosys(std::string_view text, std::size_t begin, std::size_t end,
-                                            std::vector<Diagnostic>* diagnostics) {
+std::vector<HamSymbolRef> tokenize_hamnosys(std::string_view text, std::size_t begin,
+                                            std::size_t end, std::vector<Diagnostic>* diagnostics) {
   return tokenize_hamnosys(text, LineIndex(text), begin, end, diagnostics);
 }
 
@@ -1039,9 +1183,10 @@ std::vector<HamSymbolRef> tokenize_hamnosys(std::string_view text, const LineInd
       r.text = std::string(text.substr(r.offset, i - r.offset));
       const HamSymbolInfo* info = ham_symbol_by_name(r.text);
       if (!info) {
-        diagnostics->push_back(index.make(r.offset, i - r.offset, r.text,
-                                          "unknown HamNoSys symbol name '" + r.text +
-                                              "': expected a name such as hamflathand (docs/hamnosys-symbols.tsv)"));
+        diagnostics->push_back(
+            index.make(r.offset, i - r.offset, r.text,
+                       "unknown HamNoSys symbol name '" + r.text +
+                           "': expected a name such as hamflathand (docs/hamnosys-symbols.tsv)"));
         continue;
       }
       r.code = info->code;
@@ -1051,9 +1196,10 @@ std::vector<HamSymbolRef> tokenize_hamnosys(std::string_view text, const LineInd
       const HamSymbolInfo* info = ham_symbol_by_code(cp);
       r.text = info ? info->name : code_point_label(cp);
       if (!info) {
-        diagnostics->push_back(index.make(r.offset, i - r.offset, r.text,
-                                          "unknown HamNoSys symbol " + r.text +
-                                              ": expected a HamNoSys 4 code point (U+E000..U+E0F1) or a symbol name"));
+        diagnostics->push_back(
+            index.make(r.offset, i - r.offset, r.text,
+                       "unknown HamNoSys symbol " + r.text +
+                           ": expected a HamNoSys 4 code point (U+E000..U+E0F1) or a symbol name"));
         continue;
       }
       r.code = cp;

@@ -257,6 +257,8 @@ std::vector<char32_t> hamnosys_symbols(const SignSpec& sign) {
     case Symmetry::ParallelUD: append(&out, {hamsymmpar, hamfingerstraightmod}); break;
     case Symmetry::ParallelIO: append(&out, {hamsymmpar, hamlargemod}); break;
   }
+  // HamNoSys 4: hamnondominant before a one-handed sign's configuration: the other hand signs.
+  if (sign.one_hand_is_nondominant && !sign.nondominant) out.push_back(hamnondominant);
   const Orientation default_orientation;
   if (sign.nondominant) {
     out.push_back(hamparbegin);

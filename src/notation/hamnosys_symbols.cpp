@@ -44,6 +44,9 @@ const HamSymbolInfo* ham_symbol_by_name(std::string_view name) {
                                      return std::string_view(kSymbols[i].name) < n;
                                    });
   if (it != order.end() && std::string_view(kSymbols[*it].name) == name) return &kSymbols[*it];
+  // H-SiGML (the HamNoSys 4 element names of UEA's SiGML tools) spells U+E060 "hamUpperarm";
+  // the symbol table's name is "hamupperarm". Both are read; printers write the table's.
+  if (name == "hamUpperarm") return ham_symbol_by_name("hamupperarm");
   return nullptr;
 }
 

@@ -88,6 +88,22 @@ FingerConfig fixed_state(int id) {
 using Fingers = std::array<FingerConfig, kFingerCount>;
 using FingerMask = std::array<bool, kFingerCount>;
 
+// Fingers named after a base handshape and its modifiers with no bending after them take the
+// place of the base's selected fingers (HamNoSys 4 / G-SiGML specialfingers: "hamfinger2
+// hammiddlefinger" is the middle finger extended in the index's place, not both): a selected
+// finger that is not named closes. `named` null: no such trailing digits. Only for the bases
+// that select some of the four fingers (finger2, finger23, pinch12, cee12, ...): after a flat
+// hand or a fist the digits name the fingers the hand is read with, as before.
+void take_the_selected_fingers_place(const FingerMask& selected, const FingerMask* named, Fingers* f) {
+  if (!named) return;
+  int count = 0;
+  for (int k = 1; k < kFingerCount; ++k) count += selected[k] ? 1 : 0;
+  if (count == 0 || count >= 4) return;
+  for (int k = 1; k < kFingerCount; ++k) {
+    if (selected[k] && !(*named)[k]) (*f)[k] = seed_state(0.0f);
+  }
+}
+
 // Base shape: fingers and the selected set the bending modifiers apply to.
 void base_shape(char32_t base, Fingers* f, FingerMask* selected) {
   const FingerConfig pressed = seed_state(0.0f), straight = seed_state(1.0f);
@@ -245,6 +261,7 @@ bool build_one(const std::vector<char32_t>& words, std::size_t* i, Fingers* f, S
     }
     ++*i;
   }
+  take_the_selected_fingers_place(selected, any_named ? &named : nullptr, f);
   return true;
 }
 

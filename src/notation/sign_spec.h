@@ -196,6 +196,10 @@ struct SignSpec {
   std::optional<HandSpec> nondominant;  // empty: one-handed sign
   Symmetry symmetry = Symmetry::None;
   bool nondominant_is_place = false;    // the other hand is the location, it does not move
+  // A one-handed sign made with the non-dominant hand (HamNoSys hamnondominant before the
+  // configuration, G-SiGML <sign_manual nondominant="true">): `dominant` describes that hand, in
+  // the same absolute directions and places as a written non-dominant hand; the dominant hand rests.
+  bool one_hand_is_nondominant = false;
   std::vector<MovementStep> movements;  // empty: a static sign (a hold, as in most letters)
   Repetition repetition;
   NonManual nonmanual;

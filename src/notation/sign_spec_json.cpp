@@ -240,6 +240,7 @@ json sign_to_json(const SignSpec& s) {
           {"nondominant", s.nondominant ? hand_json(*s.nondominant) : json(nullptr)},
           {"symmetry", name_of(s.symmetry)},
           {"nondominant_is_place", s.nondominant_is_place},
+          {"one_hand_is_nondominant", s.one_hand_is_nondominant},
           {"movements", steps},
           {"repetition", {{"kind", name_of(s.repetition.kind)}, {"count", s.repetition.count}}},
           {"nonmanual",
@@ -269,6 +270,10 @@ bool sign_from_json(const json& j, SignSpec* out, std::string* error) {
       !in.integer(*rep, "count", "sign.repetition", 0, 1000, &s.repetition.count)) {
     return false;
   }
+  // Optional: JSON written before the field existed reads as a sign of the dominant hand.
+  if (j.contains("one_hand_is_nondominant") &&
+      !in.boolean(j, "one_hand_is_nondominant", "sign", &s.one_hand_is_nondominant))
+    return false;
   if (!nd->is_null()) {
     HandSpec h;
     if (!in.hand(*nd, "sign.nondominant", &h)) return false;

@@ -1413,7 +1413,9 @@ std::array<HandPlan, 2> make_plans(const SynthContext& ctx, const notation::Sign
   const Side dom = lh ? kLeft : kRight;
   std::array<HandPlan, 2> plans;
   HandPlan& d = plans[0];
-  d.side = dom;
+  // A one-handed sign of the non-dominant hand (hamnondominant, nondominant="true") is made by
+  // that hand; its HandSpec is written as a non-dominant hand is, so only the side changes.
+  d.side = sign.one_hand_is_nondominant && !sign.nondominant ? other(dom) : dom;
   d.active = true;
   d.spec = sign.dominant;
   d.mirror_x = lh;

@@ -79,16 +79,16 @@ TEST(SiGML, GesturalSignMapsOntoSignSpec) {
 
 TEST(SiGML, BadValuesAndSymbolsArePositioned) {
   const std::vector<SignParse> v = parse_sigml_text(
-      "<sigml>\n<hamgestural_sign gloss=\"A\"><sign_manual>\n  <handconfig handshape=\"flat\" extfidir=\"uuo\"/>\n"
-      "</sign_manual></hamgestural_sign>\n<hns_sign gloss=\"B\"><hamnosys_manual>\n  <hamflathand/><hamUpperarm/>\n"
+      "<sigml>\n<hamgestural_sign gloss=\"A\"><sign_manual>\n  <handconfig handshape=\"flat\" extfidir=\"udo\"/>\n"
+      "</sign_manual></hamgestural_sign>\n<hns_sign gloss=\"B\"><hamnosys_manual>\n  <hamflathand/><hamUpperArm/>\n"
       "</hamnosys_manual></hns_sign>\n</sigml>");
   ASSERT_EQ(v.size(), 2u);
   ASSERT_FALSE(v[0].diagnostics.empty());
   EXPECT_EQ(v[0].diagnostics[0].line, 3);
   EXPECT_EQ(v[0].diagnostics[0].column, 3);
-  EXPECT_EQ(v[0].diagnostics[0].symbol, "extfidir=\"uuo\"");
+  EXPECT_EQ(v[0].diagnostics[0].symbol, "extfidir=\"udo\"");
   ASSERT_FALSE(v[1].diagnostics.empty());
-  EXPECT_EQ(v[1].diagnostics[0].symbol, "hamUpperarm");
+  EXPECT_EQ(v[1].diagnostics[0].symbol, "hamUpperArm");
   EXPECT_EQ(v[1].diagnostics[0].line, 6);
   EXPECT_EQ(v[1].diagnostics[0].column, 17);
   ASSERT_TRUE(v[1].spec.has_value());  // recovered
